@@ -1,0 +1,106 @@
+// The narrow seam between the CVT optimisers and whatever computes Voronoi cells and their
+// integrals (the OpenGL engine today; a CPU or compute-shader engine could slot in later).
+#ifndef cvtEngine_h
+#define cvtEngine_h
+
+#include "cvtCoreModule.h" // for export macro
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace cvt
+{
+
+/// A 2D image domain: Width x Height pixels, pixel (i, j) covers
+/// [Origin + (i, j) * Spacing, Origin + (i + 1, j + 1) * Spacing] in physical units.
+/// Origin is the lower corner of the domain, i.e. the first pixel centre minus half a spacing.
+struct Grid
+{
+  int Width = 0;
+  int Height = 0;
+  double Origin[2] = { 0.0, 0.0 };
+  double Spacing[2] = { 1.0, 1.0 };
+
+  long long NumberOfPixels() const { return static_cast<long long>(this->Width) * this->Height; }
+  double PixelArea() const { return this->Spacing[0] * this->Spacing[1]; }
+  double XMin() const { return this->Origin[0]; }
+  double XMax() const { return this->Origin[0] + this->Width * this->Spacing[0]; }
+  double YMin() const { return this->Origin[1]; }
+  double YMax() const { return this->Origin[1] + this->Height * this->Spacing[1]; }
+  bool Contains(double x, double y) const
+  {
+    return x >= this->XMin() && x <= this->XMax() && y >= this->YMin() && y <= this->YMax();
+  }
+};
+
+/// Per-site integrals over the Voronoi cells, in physical units. Moments are taken relative to
+/// the site: MomentX[i] = integral of rho (x - x_i), so the centroid is x_i + Moment / Mass and
+/// dF/dx_i = -2 Moment.
+struct CellSums
+{
+  std::vector<double> Mass, MomentX, MomentY, Energy;
+
+  void Resize(size_t n)
+  {
+    this->Mass.assign(n, 0.0);
+    this->MomentX.assign(n, 0.0);
+    this->MomentY.assign(n, 0.0);
+    this->Energy.assign(n, 0.0);
+  }
+  size_t Size() const { return this->Mass.size(); }
+  double TotalEnergy() const
+  {
+    double e = 0.0;
+    for (double v : this->Energy)
+    {
+      e += v;
+    }
+    return e;
+  }
+  /// |grad F| with dF/dx_i = 2 m_i (x_i - c_i) = -2 Moment_i.
+  double GradientNorm() const
+  {
+    double g = 0.0;
+    for (size_t i = 0; i < this->Size(); ++i)
+    {
+      g += 4.0 * (this->MomentX[i] * this->MomentX[i] + this->MomentY[i] * this->MomentY[i]);
+    }
+    return std::sqrt(g);
+  }
+};
+
+/// What an engine must do for the optimisers. Sites are flat (x0, y0, x1, y1, ...) physical
+/// coordinates inside the grid's domain. Every method returns false on failure and leaves a
+/// message in GetLastError().
+class CVTCORE_EXPORT Engine
+{
+public:
+  virtual ~Engine() = default;
+
+  /// Prepare for this domain and density (one value per pixel, row-major, x fastest).
+  virtual bool SetDomain(const Grid& grid, const std::vector<float>& density) = 0;
+  virtual bool SetSites(const std::vector<double>& sites) = 0;
+  /// Label the domain for the current sites and integrate over every cell.
+  virtual bool ComputeCellSums(CellSums& sums) = 0;
+  /// Lloyd step: move every site with positive mass to the centroid found by the last
+  /// ComputeCellSums (sites of empty cells stay). Engines may keep the sites on the device.
+  virtual bool MoveSitesToCentroids() = 0;
+  virtual bool GetSites(std::vector<double>& sites) = 0;
+  /// Nearest-site label of every pixel centre (-1 where none), row-major.
+  virtual bool GetLabels(std::vector<int>& labels) = 0;
+
+  const std::string& GetLastError() const { return this->LastError; }
+
+protected:
+  bool Fail(const std::string& message)
+  {
+    this->LastError = message;
+    return false;
+  }
+  std::string LastError;
+};
+
+} // namespace cvt
+
+#endif

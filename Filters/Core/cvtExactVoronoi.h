@@ -1,0 +1,50 @@
+// Exact CPU reference: continuous Voronoi cells clipped to the rectangular domain, their exact
+// integrals (uniform or pixelwise-constant density), and brute-force nearest-site labels.
+// Used by the tests and by users who want to check a GPU result.
+#ifndef cvtExactVoronoi_h
+#define cvtExactVoronoi_h
+
+#include "cvtCoreModule.h" // for export macro
+#include "cvtEngine.h"
+
+#include <vector>
+
+namespace cvt
+{
+
+/// A convex polygon, counter-clockwise.
+struct Polygon
+{
+  std::vector<double> X, Y;
+  size_t Size() const { return this->X.size(); }
+};
+
+/// Integrals of a density of 1 over a polygon, relative to a centre c.
+struct PolygonIntegrals
+{
+  double Area = 0.0;
+  double MomentX = 0.0, MomentY = 0.0; // integral of (x - c)
+  double SecondMoment = 0.0;           // integral of |x - c|^2
+};
+
+CVTCORE_EXPORT PolygonIntegrals IntegratePolygon(const Polygon& polygon, double cx, double cy);
+
+/// Keeps the part of `polygon` where a x + b y <= c.
+CVTCORE_EXPORT Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c);
+
+/// The Voronoi cells of all sites (flat x, y) clipped to the grid's domain, one polygon each.
+CVTCORE_EXPORT std::vector<Polygon> ClippedVoronoiCells(
+  const Grid& grid, const std::vector<double>& sites);
+
+/// Exact per-cell integrals. An empty density means uniform density 1; otherwise the density is
+/// constant over each pixel (row-major, one value per pixel).
+CVTCORE_EXPORT CellSums ExactCellSums(
+  const Grid& grid, const std::vector<double>& sites, const std::vector<float>& density);
+
+/// Nearest site of every pixel centre, by brute force (ties: the lower index).
+CVTCORE_EXPORT std::vector<int> BruteForceLabels(
+  const Grid& grid, const std::vector<double>& sites);
+
+} // namespace cvt
+
+#endif

@@ -1,0 +1,446 @@
+#include "vtkCVTImageFilter.h"
+
+#include "cvtExactVoronoi.h"
+#include "cvtLloyd.h"
+#include "cvtSampling.h"
+#include "vtkCVTOpenGLEngine.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDelaunay2D.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkCVTImageFilter);
+
+namespace
+{
+/// The Delaunay triangles whose three cells meet inside the domain: those whose circumcentre
+/// (the shared Voronoi vertex) lies in it. Triangles come out counter-clockwise.
+vtkSmartPointer<vtkCellArray> DualTriangles(vtkPolyData* sites, const cvt::Grid& grid)
+{
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  if (sites->GetNumberOfPoints() < 3)
+  {
+    return triangles;
+  }
+  vtkNew<vtkDelaunay2D> delaunay;
+  delaunay->SetInputData(sites);
+  delaunay->Update();
+  vtkPolyData* mesh = delaunay->GetOutput();
+  vtkPoints* points = sites->GetPoints();
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    if (npts != 3)
+    {
+      continue;
+    }
+    double a[3], b[3], c[3];
+    points->GetPoint(ids[0], a);
+    points->GetPoint(ids[1], b);
+    points->GetPoint(ids[2], c);
+    const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    const double cross = bx * cy - by * cx;
+    if (cross == 0.0)
+    {
+      continue; // degenerate (collinear) triangle
+    }
+    const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    const double ux = a[0] + (cy * b2 - by * c2) / (2.0 * cross);
+    const double uy = a[1] + (bx * c2 - cx * b2) / (2.0 * cross);
+    if (!grid.Contains(ux, uy))
+    {
+      continue;
+    }
+    const vtkIdType triangle[3] = { ids[0], cross > 0.0 ? ids[1] : ids[2],
+      cross > 0.0 ? ids[2] : ids[1] };
+    triangles->InsertNextCell(3, triangle);
+  }
+  return triangles;
+}
+
+template <typename T>
+void AddFieldValue(vtkFieldData* fields, const char* name, T value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(static_cast<double>(value));
+  fields->AddArray(array);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkCVTImageFilter::vtkCVTImageFilter()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(4);
+  // No density array by default: uniform density.
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTImageFilter::SetInitialSitesConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTImageFilter::SetInitialSitesData(vtkDataObject* sites)
+{
+  this->SetInputData(1, sites);
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkCVTImageFilter::GetSitesOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(SitesPort));
+}
+vtkImageData* vtkCVTImageFilter::GetLabelsOutput()
+{
+  return vtkImageData::SafeDownCast(this->GetOutputDataObject(LabelsPort));
+}
+vtkPolyData* vtkCVTImageFilter::GetDualOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(DualPort));
+}
+vtkTable* vtkCVTImageFilter::GetHistoryOutput()
+{
+  return vtkTable::SafeDownCast(this->GetOutputDataObject(HistoryPort));
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTImageFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  }
+  else
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTImageFilter::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  switch (port)
+  {
+    case LabelsPort:
+      info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkImageData");
+      break;
+    case HistoryPort:
+      info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkTable");
+      break;
+    default:
+      info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTImageFilter::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* labelsInfo = outputVector->GetInformationObject(LabelsPort);
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
+  {
+    labelsInfo->Set(SDDP::WHOLE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
+  }
+  if (inInfo->Has(vtkDataObject::SPACING()))
+  {
+    labelsInfo->Set(vtkDataObject::SPACING(), inInfo->Get(vtkDataObject::SPACING()), 3);
+  }
+  if (inInfo->Has(vtkDataObject::ORIGIN()))
+  {
+    labelsInfo->Set(vtkDataObject::ORIGIN(), inInfo->Get(vtkDataObject::ORIGIN()), 3);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTImageFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The whole domain takes part in every cell, so always ask for all of it.
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
+  {
+    inInfo->Set(SDDP::UPDATE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
+    inInfo->Set(SDDP::EXACT_EXTENT(), 1);
+  }
+  if (vtkInformation* sitesInfo = inputVector[1]->GetInformationObject(0))
+  {
+    sitesInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
+    sitesInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTImageFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* image = vtkImageData::GetData(inputVector[0], 0);
+  vtkPointSet* initialSites = vtkPointSet::GetData(inputVector[1], 0);
+  vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
+  vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
+  vtkPolyData* dualOut = vtkPolyData::GetData(outputVector, DualPort);
+  vtkTable* historyOut = vtkTable::GetData(outputVector, HistoryPort);
+  sitesOut->Initialize();
+  labelsOut->Initialize();
+  dualOut->Initialize();
+  historyOut->Initialize();
+  this->ContextDescription.clear();
+
+  // --- The domain.
+  if (!image || image->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("The input image is empty; give a 2D image with at least one pixel.");
+    return 0;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[2] != 1)
+  {
+    vtkErrorMacro("The input image is 3D (" << dims[0] << " x " << dims[1] << " x " << dims[2]
+                                           << "); give a 2D image in the XY plane (one slice).");
+    return 0;
+  }
+  double spacing[3], origin[3];
+  image->GetSpacing(spacing);
+  image->GetOrigin(origin);
+  if (!(spacing[0] > 0.0) || !(spacing[1] > 0.0))
+  {
+    vtkErrorMacro("The input image has a non-positive spacing (" << spacing[0] << ", "
+                                                                << spacing[1] << "); give positive spacings.");
+    return 0;
+  }
+  const int* extent = image->GetExtent();
+  cvt::Grid grid;
+  grid.Width = dims[0];
+  grid.Height = dims[1];
+  grid.Spacing[0] = spacing[0];
+  grid.Spacing[1] = spacing[1];
+  grid.Origin[0] = origin[0] + (extent[0] - 0.5) * spacing[0];
+  grid.Origin[1] = origin[1] + (extent[2] - 0.5) * spacing[1];
+
+  // --- The density.
+  std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
+  vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
+  const bool densityChosen = arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_NAME()) &&
+    arrayInfo->Get(vtkDataObject::FIELD_NAME())[0] != '\0';
+  if (densityChosen)
+  {
+    vtkDataArray* array = this->GetInputArrayToProcess(0, inputVector);
+    const char* name = arrayInfo->Get(vtkDataObject::FIELD_NAME());
+    if (!array)
+    {
+      vtkErrorMacro("The density array '" << name
+                                          << "' is not a point array of the input image; choose one of its point arrays.");
+      return 0;
+    }
+    if (array->GetNumberOfComponents() != 1)
+    {
+      vtkErrorMacro("The density array '" << name << "' has " << array->GetNumberOfComponents()
+                                          << " components; a density needs exactly one (convert colours to luminance first).");
+      return 0;
+    }
+    if (array->GetNumberOfTuples() != grid.NumberOfPixels())
+    {
+      vtkErrorMacro("The density array '" << name << "' does not hold one value per pixel.");
+      return 0;
+    }
+    for (vtkIdType p = 0; p < array->GetNumberOfTuples(); ++p)
+    {
+      density[p] = static_cast<float>(array->GetComponent(p, 0));
+    }
+  }
+  const std::string densityError = cvt::CheckDensity(grid, density);
+  if (!densityError.empty())
+  {
+    vtkErrorMacro("Bad density: " << densityError << ".");
+    return 0;
+  }
+
+  // --- The initial sites.
+  std::vector<double> sites;
+  if (initialSites)
+  {
+    const vtkIdType n = initialSites->GetNumberOfPoints();
+    sites.resize(2 * static_cast<size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double p[3];
+      initialSites->GetPoint(i, p);
+      sites[2 * i] = p[0];
+      sites[2 * i + 1] = p[1];
+    }
+  }
+  else
+  {
+    if (this->NumberOfSites <= 0)
+    {
+      vtkErrorMacro("NumberOfSites is " << this->NumberOfSites << "; ask for at least one site.");
+      return 0;
+    }
+    if (this->NumberOfSites > grid.NumberOfPixels())
+    {
+      vtkErrorMacro("NumberOfSites (" << this->NumberOfSites << ") exceeds the "
+                                      << grid.NumberOfPixels()
+                                      << " pixels of the image; use fewer sites or a finer image.");
+      return 0;
+    }
+    sites = cvt::SampleSites(grid, densityChosen ? density : std::vector<float>(),
+      this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed));
+  }
+  const std::string sitesError = cvt::CheckSites(grid, sites);
+  if (!sitesError.empty())
+  {
+    vtkErrorMacro("Bad initial sites: " << sitesError << ".");
+    return 0;
+  }
+
+  // --- Lloyd on the GPU.
+  vtkNew<vtkCVTOpenGLEngine> engine;
+  engine->SetAdaptiveStep(this->AdaptiveJumpFlooding);
+  engine->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+  options.Tolerance = this->Tolerance;
+  cvt::OptimizerResult result;
+  std::string error;
+  const auto progress = [this](double fraction)
+  {
+    this->UpdateProgress(fraction);
+    return !this->GetAbortExecute();
+  };
+  const bool ok = engine->SetDomain(grid, density) && engine->SetSites(sites);
+  this->ContextDescription = engine->GetContextDescription();
+  if (!ok || !cvt::RunLloyd(*engine, options, progress, result, error))
+  {
+    vtkErrorMacro("The GPU CVT failed: " << (ok ? error : engine->GetLastError()) << ".");
+    return 0;
+  }
+  std::vector<int> labels;
+  if (!engine->GetLabels(labels))
+  {
+    vtkErrorMacro("The GPU CVT failed: " << engine->GetLastError() << ".");
+    return 0;
+  }
+  engine->ReleaseGraphicsResources();
+
+  // --- Outputs.
+  const vtkIdType n = static_cast<vtkIdType>(result.Sites.size() / 2);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkIntArray> siteIds;
+  siteIds->SetName("SiteId");
+  siteIds->SetNumberOfValues(n);
+  vtkNew<vtkDoubleArray> mass, energy;
+  mass->SetName("Mass");
+  mass->SetNumberOfValues(n);
+  energy->SetName("Energy");
+  energy->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->SetPoint(i, result.Sites[2 * i], result.Sites[2 * i + 1], origin[2]);
+    vertices->InsertNextCell(1, &i);
+    siteIds->SetValue(i, static_cast<int>(i));
+    mass->SetValue(i, result.Sums.Mass[i]);
+    energy->SetValue(i, result.Sums.Energy[i]);
+  }
+  sitesOut->SetPoints(points);
+  sitesOut->SetVerts(vertices);
+  sitesOut->GetPointData()->AddArray(siteIds);
+  sitesOut->GetPointData()->AddArray(mass);
+  sitesOut->GetPointData()->AddArray(energy);
+  vtkFieldData* fields = sitesOut->GetFieldData();
+  AddFieldValue(fields, "Energy", result.Sums.TotalEnergy());
+  AddFieldValue(fields, "GradientNorm", result.Sums.GradientNorm());
+  AddFieldValue(fields, "Iterations", result.Iterations);
+  AddFieldValue(fields, "Evaluations", result.Evaluations);
+  vtkNew<vtkStringArray> reason;
+  reason->SetName("StopReason");
+  reason->InsertNextValue(result.StopReason);
+  fields->AddArray(reason);
+
+  labelsOut->SetExtent(image->GetExtent());
+  labelsOut->SetSpacing(spacing);
+  labelsOut->SetOrigin(origin);
+  vtkNew<vtkIntArray> labelArray;
+  labelArray->SetName("SiteId");
+  labelArray->SetNumberOfValues(static_cast<vtkIdType>(labels.size()));
+  for (size_t p = 0; p < labels.size(); ++p)
+  {
+    labelArray->SetValue(static_cast<vtkIdType>(p), labels[p]);
+  }
+  labelsOut->GetPointData()->SetScalars(labelArray);
+
+  dualOut->SetPoints(points);
+  dualOut->SetPolys(DualTriangles(sitesOut, grid));
+  vtkNew<vtkIntArray> dualIds;
+  dualIds->DeepCopy(siteIds);
+  dualOut->GetPointData()->AddArray(dualIds);
+
+  vtkNew<vtkIntArray> iterationColumn, evaluationColumn;
+  iterationColumn->SetName("iteration");
+  evaluationColumn->SetName("evaluations");
+  vtkNew<vtkDoubleArray> energyColumn, gradientColumn, secondsColumn;
+  energyColumn->SetName("energy");
+  gradientColumn->SetName("gradient_norm");
+  secondsColumn->SetName("seconds");
+  for (const cvt::HistoryEntry& entry : result.History)
+  {
+    iterationColumn->InsertNextValue(entry.Iteration);
+    evaluationColumn->InsertNextValue(entry.Evaluations);
+    energyColumn->InsertNextValue(entry.Energy);
+    gradientColumn->InsertNextValue(entry.GradientNorm);
+    secondsColumn->InsertNextValue(entry.Seconds);
+  }
+  historyOut->AddColumn(iterationColumn);
+  historyOut->AddColumn(evaluationColumn);
+  historyOut->AddColumn(energyColumn);
+  historyOut->AddColumn(gradientColumn);
+  historyOut->AddColumn(secondsColumn);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTImageFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "AdaptiveJumpFlooding: " << this->AdaptiveJumpFlooding << "\n";
+  os << indent << "SplitBoundaryPixels: " << this->SplitBoundaryPixels << "\n";
+  os << indent << "ContextDescription: "
+     << (this->ContextDescription.empty() ? "(none)" : this->ContextDescription) << "\n";
+}

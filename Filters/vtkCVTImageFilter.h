@@ -1,0 +1,131 @@
+/**
+ * @class   vtkCVTImageFilter
+ * @brief   Centroidal Voronoi tessellation of a 2D image domain, computed on the GPU.
+ *
+ * Input 0 is a 2D vtkImageData: each point is the centre of one pixel of the domain (any
+ * origin and spacing). The density is the point scalar array chosen with
+ * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name), uniform when
+ * none is chosen; it must be finite, non-negative and not all zero. Optional input 1 gives the
+ * initial sites (any vtkPointSet; z is ignored); without it NumberOfSites sites are drawn with
+ * probability proportional to the density, seeded by RandomSeed.
+ *
+ * Lloyd's method runs on the GPU (vtkCVTOpenGLEngine: 1+JFA labelling and a regional
+ * reduction) until MaximumNumberOfIterations, or until no pixel changes site or the relative
+ * energy decrease falls below Tolerance (0 runs every iteration).
+ *
+ * Outputs:
+ * 0. sites: vtkPolyData, one vertex per site, point arrays SiteId, Mass, Energy; field data
+ *    Energy, GradientNorm, Iterations, Evaluations, StopReason;
+ * 1. labels: vtkImageData with the input's geometry, int point array SiteId;
+ * 2. dual: the Delaunay triangulation of sites whose cells meet inside the domain,
+ *    counter-clockwise triangles;
+ * 3. history: vtkTable (iteration, evaluations, energy, gradient_norm, seconds).
+ *
+ * Bad input (empty or 3D image, bad density, bad sites, no OpenGL context, a grid beyond the
+ * GPU's texture size) is reported with vtkErrorMacro; all outputs are then empty and
+ * RequestData returns 0. Progress is reported every iteration and AbortExecute stops the
+ * iterations (the outputs then hold the last iterate).
+ */
+#ifndef vtkCVTImageFilter_h
+#define vtkCVTImageFilter_h
+
+#include "cvtFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string> // for std::string
+
+class vtkImageData;
+class vtkPolyData;
+class vtkTable;
+
+class CVTFILTERS_EXPORT vtkCVTImageFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkCVTImageFilter* New();
+  vtkTypeMacro(vtkCVTImageFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum OutputPorts
+  {
+    SitesPort = 0,
+    LabelsPort = 1,
+    DualPort = 2,
+    HistoryPort = 3
+  };
+
+  ///@{
+  /** Number of sites drawn when no initial sites are connected (default 1000). */
+  vtkSetClampMacro(NumberOfSites, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfSites, int);
+  ///@}
+
+  ///@{
+  /** Seed of the initial site sampling (default 1): the same seed gives the same output. */
+  vtkSetMacro(RandomSeed, int);
+  vtkGetMacro(RandomSeed, int);
+  ///@}
+
+  ///@{
+  /** Iteration cap (default 100). */
+  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumNumberOfIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Stop when no pixel changes site or the relative energy decrease of an iteration falls
+   * below this (default 1e-6); 0 runs every iteration.
+   */
+  vtkSetClampMacro(Tolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /** Engine options, see vtkCVTOpenGLEngine (both on by default). */
+  vtkSetMacro(AdaptiveJumpFlooding, bool);
+  vtkGetMacro(AdaptiveJumpFlooding, bool);
+  vtkBooleanMacro(AdaptiveJumpFlooding, bool);
+  vtkSetMacro(SplitBoundaryPixels, bool);
+  vtkGetMacro(SplitBoundaryPixels, bool);
+  vtkBooleanMacro(SplitBoundaryPixels, bool);
+  ///@}
+
+  /** Initial sites (optional input 1). */
+  void SetInitialSitesConnection(vtkAlgorithmOutput* output);
+  void SetInitialSitesData(vtkDataObject* sites);
+
+  ///@{
+  /** Typed access to the outputs. */
+  vtkPolyData* GetSitesOutput();
+  vtkImageData* GetLabelsOutput();
+  vtkPolyData* GetDualOutput();
+  vtkTable* GetHistoryOutput();
+  ///@}
+
+  /** Description of the OpenGL context the last run used (empty before a run). */
+  const std::string& GetContextDescription() const { return this->ContextDescription; }
+
+protected:
+  vtkCVTImageFilter();
+  ~vtkCVTImageFilter() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int NumberOfSites = 1000;
+  int RandomSeed = 1;
+  int MaximumNumberOfIterations = 100;
+  double Tolerance = 1e-6;
+  bool AdaptiveJumpFlooding = true;
+  bool SplitBoundaryPixels = true;
+  std::string ContextDescription;
+
+private:
+  vtkCVTImageFilter(const vtkCVTImageFilter&) = delete;
+  void operator=(const vtkCVTImageFilter&) = delete;
+};
+
+#endif

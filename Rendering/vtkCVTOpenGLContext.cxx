@@ -1,0 +1,193 @@
+#include "vtkCVTOpenGLContext.h"
+
+#include "vtkAutoInit.h"
+#include "vtkCVTEGLRenderWindow.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderWindow.h"
+#include "vtk_glew.h"
+
+#include <EGL/egl.h>
+#include <GL/glx.h>
+
+#include <cstdlib>
+
+// vtkRenderWindow::New() yields a stub unless the OpenGL2 factory overrides are registered.
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+
+vtkStandardNewMacro(vtkCVTOpenGLContext);
+
+struct vtkCVTOpenGLContext::SavedContext
+{
+  EGLDisplay EglDisplay = EGL_NO_DISPLAY;
+  EGLContext EglContext = EGL_NO_CONTEXT;
+  EGLSurface EglDraw = EGL_NO_SURFACE, EglRead = EGL_NO_SURFACE;
+  Display* GlxDisplay = nullptr;
+  GLXContext GlxContext = nullptr;
+  GLXDrawable GlxDraw = 0, GlxRead = 0;
+  bool Valid = false;
+};
+
+//------------------------------------------------------------------------------
+vtkCVTOpenGLContext::vtkCVTOpenGLContext()
+  : Saved(new SavedContext)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkCVTOpenGLContext::~vtkCVTOpenGLContext()
+{
+  if (this->Window)
+  {
+    // Release every GL object of the window while its context is current, then give the
+    // thread its previous context back.
+    this->MakeCurrent();
+    this->Window->Finalize();
+    this->Window = nullptr;
+    this->RestorePrevious();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLContext::Initialize()
+{
+  if (this->Window)
+  {
+    return true;
+  }
+  const char* choice = std::getenv("CVT_OPENGL_CONTEXT");
+  const std::string wanted = choice ? choice : "";
+  const bool tryEgl = wanted.empty() || wanted == "egl";
+  const char* display = std::getenv("DISPLAY");
+  const bool haveDisplay = display != nullptr && display[0] != '\0';
+  const bool tryWindow = (wanted.empty() || wanted == "window") && haveDisplay;
+  std::string reasons;
+
+  this->Saved->Valid = false;
+  this->MakeCurrent(); // remembers the thread's context; no window yet
+  if (tryEgl)
+  {
+    vtkNew<vtkCVTEGLRenderWindow> egl;
+    if (egl->CreateHeadlessContext())
+    {
+      this->Window = egl;
+      this->Description = "EGL " + egl->GetPlatformName();
+    }
+    else
+    {
+      reasons += "EGL: " + egl->GetLastError() + ". ";
+    }
+  }
+  if (!this->Window && tryWindow)
+  {
+    vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+    auto* openGLWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+    if (openGLWindow)
+    {
+      openGLWindow->SetOffScreenRendering(1);
+      openGLWindow->SetSize(16, 16);
+      openGLWindow->Initialize();
+      // VTK only creates a shader cache that compiles once the context has GL >= 3.2.
+      GLint major = 0;
+      if (openGLWindow->GetGenericContext())
+      {
+        openGLWindow->MakeCurrent();
+        glGetIntegerv(GL_MAJOR_VERSION, &major);
+      }
+      if (major >= 3)
+      {
+        this->Window = openGLWindow;
+        this->Description = "X11 offscreen window";
+      }
+      else
+      {
+        reasons += "X11 window: it could not be initialised with OpenGL >= 3.2. ";
+      }
+    }
+  }
+  if (!this->Window)
+  {
+    if (!tryWindow && !haveDisplay && wanted != "egl" && wanted != "none")
+    {
+      reasons += "X11 window: no DISPLAY is set. ";
+    }
+    if (wanted == "none")
+    {
+      reasons += "CVT_OPENGL_CONTEXT=none forbids every context. ";
+    }
+    this->LastError = "no OpenGL >= 3.2 context is available (" + reasons +
+      ") Install Mesa's EGL (libegl1, libegl-mesa0) or a GPU driver with EGL, or run under an "
+      "X server.";
+    this->RestorePrevious();
+    return false;
+  }
+  this->Window->MakeCurrent();
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  this->Description += std::string(": ") + (renderer ? renderer : "unknown renderer");
+  GLint size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+  this->MaximumTextureSize = size;
+  this->RestorePrevious();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTOpenGLContext::MakeCurrent()
+{
+  SavedContext& saved = *this->Saved;
+  saved.EglDisplay = eglGetCurrentDisplay();
+  saved.EglContext = eglGetCurrentContext();
+  saved.EglDraw = eglGetCurrentSurface(EGL_DRAW);
+  saved.EglRead = eglGetCurrentSurface(EGL_READ);
+  saved.GlxContext = glXGetCurrentContext();
+  saved.GlxDisplay = saved.GlxContext ? glXGetCurrentDisplay() : nullptr;
+  saved.GlxDraw = saved.GlxContext ? glXGetCurrentDrawable() : 0;
+  saved.GlxRead = saved.GlxContext ? glXGetCurrentReadDrawable() : 0;
+  saved.Valid = true;
+  if (this->Window)
+  {
+    this->Window->MakeCurrent();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTOpenGLContext::RestorePrevious()
+{
+  SavedContext& saved = *this->Saved;
+  if (!saved.Valid)
+  {
+    return;
+  }
+  saved.Valid = false;
+  if (saved.EglContext != EGL_NO_CONTEXT)
+  {
+    if (eglGetCurrentContext() != saved.EglContext)
+    {
+      eglMakeCurrent(saved.EglDisplay, saved.EglDraw, saved.EglRead, saved.EglContext);
+    }
+  }
+  else if (saved.GlxContext)
+  {
+    if (glXGetCurrentContext() != saved.GlxContext)
+    {
+      glXMakeContextCurrent(saved.GlxDisplay, saved.GlxDraw, saved.GlxRead, saved.GlxContext);
+    }
+  }
+  else if (this->Window && this->Window->IsCurrent())
+  {
+    this->Window->ReleaseCurrent();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTOpenGLContext::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Context: " << (this->Window ? this->Description : std::string("(none)"))
+     << "\n";
+  os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
+  if (!this->LastError.empty())
+  {
+    os << indent << "LastError: " << this->LastError << "\n";
+  }
+}

@@ -1,0 +1,62 @@
+/**
+ * @class   vtkCVTOpenGLContext
+ * @brief   Finds an OpenGL >= 3.2 context for the CVT engine, with or without a display.
+ *
+ * Tries, in order: a headless EGL context (vtkCVTEGLRenderWindow), then VTK's own offscreen
+ * render window when an X display is set. The environment variable CVT_OPENGL_CONTEXT
+ * narrows the choice: "egl", "window", or "none" (no context at all: used to test the error
+ * path). MakeCurrent() remembers whatever EGL or GLX context the thread had (ParaView renders
+ * from the same thread) and RestorePrevious() puts it back.
+ */
+#ifndef vtkCVTOpenGLContext_h
+#define vtkCVTOpenGLContext_h
+
+#include "cvtRenderingModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for ivar
+
+#include <memory> // for unique_ptr
+#include <string> // for std::string
+
+class vtkOpenGLRenderWindow;
+
+class CVTRENDERING_EXPORT vtkCVTOpenGLContext : public vtkObject
+{
+public:
+  static vtkCVTOpenGLContext* New();
+  vtkTypeMacro(vtkCVTOpenGLContext, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Find a context. Returns false with a message in GetLastError() when there is none. */
+  bool Initialize();
+  bool IsInitialized() const { return this->Window != nullptr; }
+  vtkOpenGLRenderWindow* GetRenderWindow() const { return this->Window; }
+
+  /** Make the context current, remembering the thread's previous context. */
+  void MakeCurrent();
+  /** Make the previously current context current again (or none). */
+  void RestorePrevious();
+
+  const std::string& GetLastError() const { return this->LastError; }
+  /** "EGL device", "EGL surfaceless", "X11 offscreen window", plus the GL renderer string. */
+  const std::string& GetDescription() const { return this->Description; }
+  /** Largest texture side the context supports. */
+  int GetMaximumTextureSize() const { return this->MaximumTextureSize; }
+
+protected:
+  vtkCVTOpenGLContext();
+  ~vtkCVTOpenGLContext() override;
+
+private:
+  vtkCVTOpenGLContext(const vtkCVTOpenGLContext&) = delete;
+  void operator=(const vtkCVTOpenGLContext&) = delete;
+
+  struct SavedContext;
+  std::unique_ptr<SavedContext> Saved;
+  vtkSmartPointer<vtkOpenGLRenderWindow> Window;
+  std::string LastError;
+  std::string Description;
+  int MaximumTextureSize = 0;
+};
+
+#endif

@@ -1,0 +1,670 @@
+#include "vtkCVTOpenGLEngine.h"
+
+#include "vtkCVTOpenGLContext.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkCVTJumpFloodFS.h"
+#include "vtkCVTLloydFS.h"
+#include "vtkCVTReduceFS.h"
+#include "vtkCVTReduceVS.h"
+#include "vtkCVTSeedFS.h"
+#include "vtkCVTSeedVS.h"
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkCVTOpenGLEngine);
+
+namespace
+{
+constexpr int MaxCandidates = 4; // must match vtkCVTReduceVS.glsl
+
+int NextPowerOfTwo(double value)
+{
+  int p = 1;
+  while (p < value && p < (1 << 30))
+  {
+    p *= 2;
+  }
+  return p;
+}
+
+/// Makes the engine's context current for the lifetime of the object and gives the thread
+/// its previous context back afterwards, whatever path the caller leaves by.
+class ScopedContext
+{
+public:
+  explicit ScopedContext(vtkCVTOpenGLContext* context)
+    : Context(context)
+  {
+    this->Context->MakeCurrent();
+  }
+  ~ScopedContext() { this->Context->RestorePrevious(); }
+  ScopedContext(const ScopedContext&) = delete;
+  ScopedContext& operator=(const ScopedContext&) = delete;
+
+private:
+  vtkCVTOpenGLContext* Context;
+};
+
+using Clock = std::chrono::steady_clock;
+double MillisecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+}
+
+/// GL objects: textures, their framebuffers and the shader programs.
+struct vtkCVTOpenGLEngine::Internals
+{
+  vtkNew<vtkTextureObject> Density;
+  vtkNew<vtkTextureObject> Seeds[2]; // jump flooding ping-pong
+  vtkNew<vtkTextureObject> Sites[2]; // Lloyd ping-pong
+  vtkNew<vtkTextureObject> Sums;
+  vtkNew<vtkTextureObject> Radius;
+  vtkNew<vtkOpenGLFramebufferObject> SeedsFramebuffer[2];
+  vtkNew<vtkOpenGLFramebufferObject> SitesFramebuffer[2];
+  vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
+  vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray; // attribute-less point draws
+  std::unique_ptr<vtkOpenGLQuadHelper> JumpFloodQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> LloydQuad;
+  int CurrentSeeds = 0; // which Seeds texture holds the last labelling
+  int CurrentSites = 0;
+  bool HaveSums = false;
+
+  void Release(vtkOpenGLRenderWindow* window)
+  {
+    this->Density->ReleaseGraphicsResources(window);
+    this->Sums->ReleaseGraphicsResources(window);
+    this->Radius->ReleaseGraphicsResources(window);
+    this->SumsFramebuffer->ReleaseGraphicsResources(window);
+    for (int i = 0; i < 2; ++i)
+    {
+      this->Seeds[i]->ReleaseGraphicsResources(window);
+      this->Sites[i]->ReleaseGraphicsResources(window);
+      this->SeedsFramebuffer[i]->ReleaseGraphicsResources(window);
+      this->SitesFramebuffer[i]->ReleaseGraphicsResources(window);
+    }
+    this->EmptyVertexArray->ReleaseGraphicsResources();
+    if (this->JumpFloodQuad)
+    {
+      this->JumpFloodQuad->ReleaseGraphicsResources(window);
+      this->JumpFloodQuad.reset();
+    }
+    if (this->LloydQuad)
+    {
+      this->LloydQuad->ReleaseGraphicsResources(window);
+      this->LloydQuad.reset();
+    }
+    this->HaveSums = false;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkCVTOpenGLEngine::vtkCVTOpenGLEngine()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkCVTOpenGLEngine::~vtkCVTOpenGLEngine()
+{
+  this->ReleaseGraphicsResources();
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTOpenGLEngine::ReleaseGraphicsResources()
+{
+  if (this->Context->IsInitialized())
+  {
+    ScopedContext current(this->Context);
+    this->Internal->Release(this->Context->GetRenderWindow());
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkCVTOpenGLEngine::GetContextDescription() const
+{
+  return this->Context->GetDescription();
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::CheckGLError(const char* where)
+{
+  GLenum error = glGetError();
+  if (error == GL_NO_ERROR)
+  {
+    return true;
+  }
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  std::ostringstream msg;
+  msg << "OpenGL error 0x" << std::hex << error << " during " << where;
+  return this->Fail(msg.str());
+}
+
+namespace
+{
+/// Makes `texture` a nearest-filtered float texture of the given size and components.
+bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
+  int height, int components, const float* data = nullptr)
+{
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (data)
+  {
+    return texture->Create2DFromRaw(width, height, components, VTK_FLOAT, const_cast<float*>(data));
+  }
+  return texture->Allocate2D(width, height, components, VTK_FLOAT);
+}
+
+bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
+  vtkTextureObject* target0, vtkTextureObject* target1 = nullptr, bool depth = false)
+{
+  framebuffer->SetContext(window);
+  window->GetState()->PushFramebufferBindings();
+  framebuffer->Bind();
+  framebuffer->AddColorAttachment(0, target0);
+  if (depth)
+  {
+    framebuffer->AddDepthAttachment();
+  }
+  if (target1)
+  {
+    framebuffer->AddColorAttachment(1, target1);
+  }
+  framebuffer->ActivateDrawBuffers(target1 ? 2 : 1);
+  const bool complete = framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
+  window->GetState()->PopFramebufferBindings();
+  return complete;
+}
+
+/// Reads a float render target back (RGBA or R).
+void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
+  int attachment, int width, int height, GLenum format, float* out)
+{
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  framebuffer->ActivateReadBuffer(attachment);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, format, GL_FLOAT, out);
+  state->PopFramebufferBindings();
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<float>& density)
+{
+  if (grid.Width <= 0 || grid.Height <= 0)
+  {
+    return this->Fail("the domain has no pixels");
+  }
+  if (static_cast<long long>(density.size()) != grid.NumberOfPixels())
+  {
+    return this->Fail("the density must hold one value per pixel");
+  }
+  if (grid.NumberOfPixels() > INT_MAX / MaxCandidates)
+  {
+    return this->Fail("the domain has too many pixels for one draw call");
+  }
+  if (!this->Context->Initialize())
+  {
+    return this->Fail(this->Context->GetLastError());
+  }
+  const int maximumSize = this->Context->GetMaximumTextureSize();
+  if (grid.Width > maximumSize || grid.Height > maximumSize)
+  {
+    std::ostringstream msg;
+    msg << "the grid of " << grid.Width << " x " << grid.Height
+        << " pixels exceeds this GPU's largest texture (" << maximumSize << " x " << maximumSize
+        << "); use a coarser image";
+    return this->Fail(msg.str());
+  }
+
+  ScopedContext current(this->Context);
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  Internals& in = *this->Internal;
+  in.Release(window);
+  this->Grid = grid;
+  this->NumberOfSites = 0;
+  this->FullStep = std::max(1, NextPowerOfTwo(std::max(grid.Width, grid.Height)) / 2);
+  this->NextStep = this->FullStep;
+  bool ok = AllocateFloatTexture(in.Density, window, grid.Width, grid.Height, 1, density.data());
+  for (int i = 0; i < 2 && ok; ++i)
+  {
+    ok = AllocateFloatTexture(in.Seeds[i], window, grid.Width, grid.Height, 4) &&
+      AttachTargets(in.SeedsFramebuffer[i], window, in.Seeds[i], nullptr, true);
+  }
+  if (!ok)
+  {
+    in.Release(window);
+    return this->Fail("the GPU could not allocate float textures for a " +
+      std::to_string(grid.Width) + " x " + std::to_string(grid.Height) + " grid");
+  }
+  return this->CheckGLError("domain set-up");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::SetSites(const std::vector<double>& sites)
+{
+  if (!this->Internal->Density->GetHandle())
+  {
+    return this->Fail("SetDomain must succeed before SetSites");
+  }
+  const int n = static_cast<int>(sites.size() / 2);
+  if (n <= 0)
+  {
+    return this->Fail("there are no sites");
+  }
+  const int maximumSize = this->Context->GetMaximumTextureSize();
+  int slotWidth = std::min(maximumSize, static_cast<int>(std::ceil(std::sqrt(double(n)))));
+  int slotHeight = (n + slotWidth - 1) / slotWidth;
+  if (slotHeight > maximumSize)
+  {
+    return this->Fail("too many sites for this GPU's textures");
+  }
+
+  std::vector<float> texels(static_cast<size_t>(slotWidth) * slotHeight * 4, 0.0f);
+  for (int i = 0; i < n; ++i)
+  {
+    texels[4 * i + 0] = static_cast<float>((sites[2 * i] - this->Grid.Origin[0]) / this->Grid.Spacing[0]);
+    texels[4 * i + 1] = static_cast<float>((sites[2 * i + 1] - this->Grid.Origin[1]) / this->Grid.Spacing[1]);
+  }
+
+  ScopedContext current(this->Context);
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  Internals& in = *this->Internal;
+  bool ok = true;
+  for (int i = 0; i < 2 && ok; ++i)
+  {
+    ok = AllocateFloatTexture(in.Sites[i], window, slotWidth, slotHeight, 4, texels.data()) &&
+      AttachTargets(in.SitesFramebuffer[i], window, in.Sites[i]);
+  }
+  ok = ok && AllocateFloatTexture(in.Sums, window, slotWidth, slotHeight, 4) &&
+    AllocateFloatTexture(in.Radius, window, slotWidth, slotHeight, 1) &&
+    AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Radius);
+  if (!ok)
+  {
+    return this->Fail("the GPU could not allocate the site textures");
+  }
+  in.CurrentSites = 0;
+  in.HaveSums = false;
+  if (n != this->NumberOfSites)
+  {
+    // A new site set: nothing is known about its spacing. The same number of sites moved
+    // (an optimiser's step) keeps the adaptive step; the safeguard catches large moves.
+    this->NextStep = this->FullStep;
+  }
+  this->NumberOfSites = n;
+  this->SlotSize[0] = slotWidth;
+  this->SlotSize[1] = slotHeight;
+  return this->CheckGLError("site upload");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::Label(int initialStep)
+{
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  vtkOpenGLState* state = window->GetState();
+  Internals& in = *this->Internal;
+  const int gridSize[2] = { this->Grid.Width, this->Grid.Height };
+  const float metric[2] = { static_cast<float>(this->Grid.Spacing[0]),
+    static_cast<float>(this->Grid.Spacing[1]) };
+
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglViewport(0, 0, gridSize[0], gridSize[1]);
+  state->PushFramebufferBindings();
+
+  // Seed: clear to "no site", then one point per site (lowest id wins a shared pixel), then
+  // a second chance in a free neighbouring pixel for the sites that lost theirs.
+  vtkShaderProgram* seed =
+    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSeedVS, vtkCVTSeedFS, "");
+  if (!seed)
+  {
+    state->PopFramebufferBindings();
+    return this->Fail("the seed shader did not compile");
+  }
+  vtkOpenGLState::ScopedglDepthFunc depthFunction(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  in.Sites[in.CurrentSites]->Activate();
+  seed->SetUniformi("sites", in.Sites[in.CurrentSites]->GetTextureUnit());
+  seed->SetUniform2i("slotSize", this->SlotSize);
+  seed->SetUniform2i("gridSize", gridSize);
+  seed->SetUniformi("numberOfSites", this->NumberOfSites);
+  in.EmptyVertexArray->Bind();
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    in.SeedsFramebuffer[pass]->Bind();
+    in.SeedsFramebuffer[pass]->ActivateDrawBuffers(1);
+    if (pass == 0)
+    {
+      state->vtkglClearColor(0.0f, 0.0f, -1.0f, 0.0f);
+      state->vtkglClearDepth(1.0);
+      state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    else
+    {
+      // Start from the first pass's seeds.
+      in.SeedsFramebuffer[0]->Bind(GL_READ_FRAMEBUFFER);
+      in.SeedsFramebuffer[0]->ActivateReadBuffer(0);
+      state->vtkglBlitFramebuffer(0, 0, gridSize[0], gridSize[1], 0, 0, gridSize[0], gridSize[1],
+        GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      state->vtkglClearDepth(1.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+      in.Seeds[0]->Activate();
+      seed->SetUniformi("placed", in.Seeds[0]->GetTextureUnit());
+    }
+    seed->SetUniformi("secondChance", pass);
+    glDrawArrays(GL_POINTS, 0, this->NumberOfSites);
+  }
+  in.Seeds[0]->Deactivate();
+  in.EmptyVertexArray->Release();
+  in.Sites[in.CurrentSites]->Deactivate();
+  state->vtkglDisable(GL_DEPTH_TEST);
+
+  // 1+JFA: one pass of step 1, then initialStep, initialStep / 2, ..., 1.
+  std::vector<int> steps{ 1 };
+  for (int step = initialStep; step >= 1; step /= 2)
+  {
+    steps.push_back(step);
+  }
+
+  if (!in.JumpFloodQuad)
+  {
+    in.JumpFloodQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, vtkCVTJumpFloodFS, ""));
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(in.JumpFloodQuad->Program);
+  }
+  vtkShaderProgram* jump = in.JumpFloodQuad->Program;
+  if (!jump || !jump->GetCompiled())
+  {
+    state->PopFramebufferBindings();
+    return this->Fail("the jump flooding shader did not compile");
+  }
+  int source = 1; // the seeds
+  for (int step : steps)
+  {
+    const int target = 1 - source;
+    in.SeedsFramebuffer[target]->Bind();
+    in.SeedsFramebuffer[target]->ActivateDrawBuffers(1);
+    in.Seeds[source]->Activate();
+    jump->SetUniformi("seeds", in.Seeds[source]->GetTextureUnit());
+    jump->SetUniformi("stepLength", step);
+    jump->SetUniform2i("gridSize", gridSize);
+    jump->SetUniform2f("metric", metric);
+    in.JumpFloodQuad->Render();
+    in.Seeds[source]->Deactivate();
+    source = target;
+  }
+  in.CurrentSeeds = source;
+  state->PopFramebufferBindings();
+  this->LastInitialStep = initialStep;
+  return this->CheckGLError("jump flooding");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::Reduce()
+{
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  vtkOpenGLState* state = window->GetState();
+  Internals& in = *this->Internal;
+  const int gridSize[2] = { this->Grid.Width, this->Grid.Height };
+  const float metric[2] = { static_cast<float>(this->Grid.Spacing[0]),
+    static_cast<float>(this->Grid.Spacing[1]) };
+
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunction(state);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
+  state->PushFramebufferBindings();
+  in.SumsFramebuffer->Bind();
+  in.SumsFramebuffer->ActivateDrawBuffers(2);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+
+  vtkShaderProgram* reduce =
+    window->GetShaderCache()->ReadyShaderProgram(vtkCVTReduceVS, vtkCVTReduceFS, "");
+  if (!reduce)
+  {
+    state->PopFramebufferBindings();
+    return this->Fail("the reduction shader did not compile");
+  }
+  in.Seeds[in.CurrentSeeds]->Activate();
+  in.Density->Activate();
+  reduce->SetUniformi("seeds", in.Seeds[in.CurrentSeeds]->GetTextureUnit());
+  reduce->SetUniformi("density", in.Density->GetTextureUnit());
+  reduce->SetUniform2i("gridSize", gridSize);
+  reduce->SetUniform2i("slotSize", this->SlotSize);
+  reduce->SetUniform2f("metric", metric);
+  reduce->SetUniformf(
+    "radiusScale", static_cast<float>(1.0 / std::min(this->Grid.Spacing[0], this->Grid.Spacing[1])));
+  const int candidates = this->SplitBoundaryPixels ? MaxCandidates : 1;
+  reduce->SetUniformi("candidateLimit", candidates);
+
+  // Target 0 sums, target 1 keeps the maximum. vtkOpenGLState caches one blend equation for
+  // all targets, so the per-target one is set directly and put back to FUNC_ADD afterwards.
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  glBlendEquationi(1, GL_MAX);
+  in.EmptyVertexArray->Bind();
+  glDrawArraysInstanced(
+    GL_POINTS, 0, static_cast<GLsizei>(this->Grid.NumberOfPixels()), candidates);
+  in.EmptyVertexArray->Release();
+  glBlendEquationi(1, GL_FUNC_ADD);
+  in.Density->Deactivate();
+  in.Seeds[in.CurrentSeeds]->Deactivate();
+  state->PopFramebufferBindings();
+  in.HaveSums = true;
+  return this->CheckGLError("regional reduction");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::ReadSums(cvt::CellSums& sums, double& maximumRadius)
+{
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  const size_t slots = static_cast<size_t>(this->SlotSize[0]) * this->SlotSize[1];
+  std::vector<float> texels(4 * slots), radius(slots);
+  ReadTarget(this->Internal->SumsFramebuffer, window, 0, this->SlotSize[0], this->SlotSize[1],
+    GL_RGBA, texels.data());
+  ReadTarget(this->Internal->SumsFramebuffer, window, 1, this->SlotSize[0], this->SlotSize[1],
+    GL_RED, radius.data());
+  sums.Resize(this->NumberOfSites);
+  maximumRadius = 0.0;
+  for (int i = 0; i < this->NumberOfSites; ++i)
+  {
+    sums.Mass[i] = texels[4 * i + 0];
+    sums.MomentX[i] = texels[4 * i + 1];
+    sums.MomentY[i] = texels[4 * i + 2];
+    sums.Energy[i] = texels[4 * i + 3];
+    maximumRadius = std::max(maximumRadius, static_cast<double>(radius[i]));
+  }
+  return this->CheckGLError("reading the reduction back");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::ComputeCellSums(cvt::CellSums& sums)
+{
+  if (this->NumberOfSites <= 0)
+  {
+    return this->Fail("SetSites must succeed before ComputeCellSums");
+  }
+  ScopedContext current(this->Context);
+  const int step = this->AdaptiveStep ? this->NextStep : this->FullStep;
+  double maximumRadius = 0.0;
+  for (int initialStep = step;; initialStep = this->FullStep)
+  {
+    auto start = Clock::now();
+    if (!this->Label(initialStep))
+    {
+      return false;
+    }
+    if (this->MeasureTimings)
+    {
+      glFinish();
+    }
+    this->LastLabelMilliseconds = MillisecondsSince(start);
+    start = Clock::now();
+    if (!this->Reduce() || !this->ReadSums(sums, maximumRadius))
+    {
+      return false;
+    }
+    this->LastReductionMilliseconds = MillisecondsSince(start);
+    // Safeguard: a pixel labelled with a site r pixels away has its true nearest site within
+    // r too, so every label is right when r (with a margin for JFA's own misses) is within
+    // the 2 * step - 1 pixels that the passes can carry a site.
+    const int reach = 2 * initialStep - 1;
+    if (initialStep >= this->FullStep || 1.5 * maximumRadius <= reach)
+    {
+      break;
+    }
+    ++this->SafeguardFallbacks;
+  }
+  this->LastMaximumRadius = maximumRadius;
+  // Next time, start from the smallest step whose reach (2 * step - 1) covers twice the
+  // largest cell radius.
+  this->NextStep = std::min(this->FullStep, NextPowerOfTwo(maximumRadius + 0.5));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::MoveSitesToCentroids()
+{
+  Internals& in = *this->Internal;
+  if (!in.HaveSums)
+  {
+    return this->Fail("ComputeCellSums must run before MoveSitesToCentroids");
+  }
+  ScopedContext current(this->Context);
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
+  state->PushFramebufferBindings();
+  const int target = 1 - in.CurrentSites;
+  in.SitesFramebuffer[target]->Bind();
+  in.SitesFramebuffer[target]->ActivateDrawBuffers(1);
+  if (!in.LloydQuad)
+  {
+    in.LloydQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, vtkCVTLloydFS, ""));
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(in.LloydQuad->Program);
+  }
+  vtkShaderProgram* lloyd = in.LloydQuad->Program;
+  if (!lloyd || !lloyd->GetCompiled())
+  {
+    state->PopFramebufferBindings();
+    return this->Fail("the Lloyd update shader did not compile");
+  }
+  const float metric[2] = { static_cast<float>(this->Grid.Spacing[0]),
+    static_cast<float>(this->Grid.Spacing[1]) };
+  const float gridSize[2] = { static_cast<float>(this->Grid.Width),
+    static_cast<float>(this->Grid.Height) };
+  in.Sites[in.CurrentSites]->Activate();
+  in.Sums->Activate();
+  lloyd->SetUniformi("sites", in.Sites[in.CurrentSites]->GetTextureUnit());
+  lloyd->SetUniformi("sums", in.Sums->GetTextureUnit());
+  lloyd->SetUniform2i("slotSize", this->SlotSize);
+  lloyd->SetUniformi("numberOfSites", this->NumberOfSites);
+  lloyd->SetUniform2f("metric", metric);
+  lloyd->SetUniform2f("gridSize", gridSize);
+  in.LloydQuad->Render();
+  in.Sums->Deactivate();
+  in.Sites[in.CurrentSites]->Deactivate();
+  state->PopFramebufferBindings();
+  in.CurrentSites = target;
+  in.HaveSums = false;
+  return this->CheckGLError("Lloyd update");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::GetSites(std::vector<double>& sites)
+{
+  if (this->NumberOfSites <= 0)
+  {
+    return this->Fail("there are no sites");
+  }
+  ScopedContext current(this->Context);
+  Internals& in = *this->Internal;
+  std::vector<float> texels(static_cast<size_t>(this->SlotSize[0]) * this->SlotSize[1] * 4);
+  ReadTarget(in.SitesFramebuffer[in.CurrentSites], this->Context->GetRenderWindow(), 0,
+    this->SlotSize[0], this->SlotSize[1], GL_RGBA, texels.data());
+  sites.resize(2 * static_cast<size_t>(this->NumberOfSites));
+  for (int i = 0; i < this->NumberOfSites; ++i)
+  {
+    sites[2 * i] = this->Grid.Origin[0] + texels[4 * i] * this->Grid.Spacing[0];
+    sites[2 * i + 1] = this->Grid.Origin[1] + texels[4 * i + 1] * this->Grid.Spacing[1];
+  }
+  return this->CheckGLError("reading sites back");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::GetLabels(std::vector<int>& labels)
+{
+  if (!this->Internal->HaveSums && this->NumberOfSites <= 0)
+  {
+    return this->Fail("there is no labelling yet");
+  }
+  ScopedContext current(this->Context);
+  Internals& in = *this->Internal;
+  const size_t pixels = static_cast<size_t>(this->Grid.NumberOfPixels());
+  std::vector<float> texels(4 * pixels);
+  ReadTarget(in.SeedsFramebuffer[in.CurrentSeeds], this->Context->GetRenderWindow(), 0,
+    this->Grid.Width, this->Grid.Height, GL_RGBA, texels.data());
+  labels.resize(pixels);
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    labels[p] = static_cast<int>(texels[4 * p + 2]);
+  }
+  return this->CheckGLError("reading labels back");
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTOpenGLEngine::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Context: " << this->GetContextDescription() << "\n";
+  os << indent << "Grid: " << this->Grid.Width << " x " << this->Grid.Height << "\n";
+  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
+  os << indent << "AdaptiveStep: " << this->AdaptiveStep << "\n";
+  os << indent << "SplitBoundaryPixels: " << this->SplitBoundaryPixels << "\n";
+  os << indent << "MeasureTimings: " << this->MeasureTimings << "\n";
+  os << indent << "LastInitialStep: " << this->LastInitialStep << "\n";
+  os << indent << "SafeguardFallbacks: " << this->SafeguardFallbacks << "\n";
+}

@@ -1,0 +1,131 @@
+/**
+ * @class   vtkCVTOpenGLEngine
+ * @brief   GPU engine for 2D CVT: 1+JFA labelling and regional reductions on VTK's OpenGL classes.
+ *
+ * Implements the cvt::Engine seam (Rong et al. 2011, sections 3.1-3.3):
+ * - sites live in a float texture, one texel ("slot") per site, at sub-pixel positions;
+ * - a seed pass draws each site into its pixel, then 1+JFA passes label every pixel with its
+ *   nearest site (distances from pixel centres, in physical units);
+ * - a regional reduction draws points, moved by the vertex shader to their site's slot and
+ *   summed by additive float blending: mass, moments about the site and energy per cell.
+ *   Pixels on cell boundaries are split between the sites of their neighbourhood by the
+ *   bisectors, so the sums are the integrals over the true (continuous) Voronoi cells;
+ * - the Lloyd update runs in a fragment pass over the site texture; sites are read back only
+ *   when asked for.
+ *
+ * The initial JFA step is the full one (half the next power of two of the grid side) until
+ * sites are known to be spread; then it is the smallest power of two that reaches twice the
+ * largest cell radius seen, and a safeguard re-runs the labelling with the full step when a
+ * cell turns out larger than the reduced step can reach.
+ *
+ * All work happens on the context of a vtkCVTOpenGLContext; the thread's previous context is
+ * restored after every call.
+ */
+#ifndef vtkCVTOpenGLEngine_h
+#define vtkCVTOpenGLEngine_h
+
+#include "cvtEngine.h"           // for cvt::Engine
+#include "cvtRenderingModule.h" // for export macro
+#include "vtkNew.h"              // for ivars
+#include "vtkObject.h"
+
+#include <memory> // for unique_ptr
+
+class vtkCVTOpenGLContext;
+
+class CVTRENDERING_EXPORT vtkCVTOpenGLEngine
+  : public vtkObject
+  , public cvt::Engine
+{
+public:
+  static vtkCVTOpenGLEngine* New();
+  vtkTypeMacro(vtkCVTOpenGLEngine, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** cvt::Engine */
+  bool SetDomain(const cvt::Grid& grid, const std::vector<float>& density) override;
+  bool SetSites(const std::vector<double>& sites) override;
+  bool ComputeCellSums(cvt::CellSums& sums) override;
+  bool MoveSitesToCentroids() override;
+  bool GetSites(std::vector<double>& sites) override;
+  bool GetLabels(std::vector<int>& labels) override;
+  ///@}
+
+  ///@{
+  /**
+   * Shrink the initial JFA step once sites are spread (Rong 3.1), with the safeguard.
+   * On by default; off runs the full 1+JFA every time.
+   */
+  vtkSetMacro(AdaptiveStep, bool);
+  vtkGetMacro(AdaptiveStep, bool);
+  vtkBooleanMacro(AdaptiveStep, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Split boundary pixels between sites by their bisectors (default on). Off gives each pixel
+   * wholly to the site nearest its centre, as the paper does.
+   */
+  vtkSetMacro(SplitBoundaryPixels, bool);
+  vtkGetMacro(SplitBoundaryPixels, bool);
+  vtkBooleanMacro(SplitBoundaryPixels, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Wait for the GPU after each phase so that the phase timings below are true (benchmarks);
+   * off by default, since waiting costs throughput.
+   */
+  vtkSetMacro(MeasureTimings, bool);
+  vtkGetMacro(MeasureTimings, bool);
+  ///@}
+
+  /** Milliseconds of the last labelling (seed + JFA) and reduction (+ readback). */
+  double GetLastLabelMilliseconds() const { return this->LastLabelMilliseconds; }
+  double GetLastReductionMilliseconds() const { return this->LastReductionMilliseconds; }
+  /** Initial JFA step of the last labelling, and how often the safeguard fell back. */
+  int GetLastInitialStep() const { return this->LastInitialStep; }
+  int GetNumberOfSafeguardFallbacks() const { return this->SafeguardFallbacks; }
+  /** Largest distance (pixels) from a site to a pixel labelled with it, last labelling. */
+  double GetLastMaximumCellRadius() const { return this->LastMaximumRadius; }
+
+  /** Which OpenGL context the engine runs on (empty before SetDomain). */
+  std::string GetContextDescription() const;
+
+  /** Free every GL object now (also done on destruction). */
+  void ReleaseGraphicsResources();
+
+protected:
+  vtkCVTOpenGLEngine();
+  ~vtkCVTOpenGLEngine() override;
+
+private:
+  vtkCVTOpenGLEngine(const vtkCVTOpenGLEngine&) = delete;
+  void operator=(const vtkCVTOpenGLEngine&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+  vtkNew<vtkCVTOpenGLContext> Context;
+
+  bool Label(int initialStep);
+  bool Reduce();
+  bool ReadSums(cvt::CellSums& sums, double& maximumRadius);
+  bool CheckGLError(const char* where);
+
+  cvt::Grid Grid;
+  int NumberOfSites = 0;
+  int SlotSize[2] = { 0, 0 };
+  int FullStep = 1;
+  int NextStep = 1;
+  bool AdaptiveStep = true;
+  bool SplitBoundaryPixels = true;
+  bool MeasureTimings = false;
+  double LastLabelMilliseconds = 0.0;
+  double LastReductionMilliseconds = 0.0;
+  int LastInitialStep = 0;
+  int SafeguardFallbacks = 0;
+  double LastMaximumRadius = 0.0;
+};
+
+#endif

@@ -1,0 +1,82 @@
+#include "cvtExactVoronoi.h"
+#include "cvtSampling.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+cvt::Grid SquareGrid(int n, double lo, double hi)
+{
+  cvt::Grid grid;
+  grid.Width = grid.Height = n;
+  grid.Origin[0] = grid.Origin[1] = lo;
+  grid.Spacing[0] = grid.Spacing[1] = (hi - lo) / n;
+  return grid;
+}
+}
+
+TEST(ExactVoronoi, UnitSquareIntegrals)
+{
+  cvt::Polygon square;
+  square.X = { 0, 1, 1, 0 };
+  square.Y = { 0, 0, 1, 1 };
+  const auto r = cvt::IntegratePolygon(square, 0.0, 0.0);
+  EXPECT_NEAR(r.Area, 1.0, 1e-15);
+  EXPECT_NEAR(r.MomentX, 0.5, 1e-15);
+  EXPECT_NEAR(r.MomentY, 0.5, 1e-15);
+  EXPECT_NEAR(r.SecondMoment, 2.0 / 3.0, 1e-15); // integral of x^2 + y^2
+  const auto c = cvt::IntegratePolygon(square, 0.5, 0.5);
+  EXPECT_NEAR(c.MomentX, 0.0, 1e-15);
+  EXPECT_NEAR(c.SecondMoment, 1.0 / 6.0, 1e-15);
+}
+
+TEST(ExactVoronoi, TwoSitesSplitTheSquareInHalves)
+{
+  const cvt::Grid grid = SquareGrid(4, -1.0, 1.0);
+  const std::vector<double> sites{ -0.5, 0.0, 0.5, 0.0 };
+  const cvt::CellSums sums = cvt::ExactCellSums(grid, sites, {});
+  EXPECT_NEAR(sums.Mass[0], 2.0, 1e-12);
+  EXPECT_NEAR(sums.Mass[1], 2.0, 1e-12);
+  // Each half [0,1] x [-1,1] about its centre: (1/12 + 4/12) * 2.
+  EXPECT_NEAR(sums.Energy[0], 2.0 * (1.0 / 12.0 + 4.0 / 12.0), 1e-12);
+  EXPECT_NEAR(sums.GradientNorm(), 0.0, 1e-12); // both sites are centroids already
+}
+
+TEST(ExactVoronoi, CellsTileTheDomain)
+{
+  const cvt::Grid grid = SquareGrid(64, -1.0, 1.0);
+  const auto sites = cvt::SampleSites(grid, {}, 300, 11);
+  const cvt::CellSums sums = cvt::ExactCellSums(grid, sites, {});
+  double total = 0.0;
+  for (double m : sums.Mass)
+  {
+    total += m;
+  }
+  EXPECT_NEAR(total, 4.0, 1e-9);
+}
+
+TEST(ExactVoronoi, PixelwiseDensityMatchesUniformWhenConstant)
+{
+  const cvt::Grid grid = SquareGrid(16, 0.0, 1.0);
+  const auto sites = cvt::SampleSites(grid, {}, 20, 5);
+  const cvt::CellSums uniform = cvt::ExactCellSums(grid, sites, {});
+  const cvt::CellSums pixelwise =
+    cvt::ExactCellSums(grid, sites, std::vector<float>(256, 2.0f));
+  for (size_t i = 0; i < uniform.Size(); ++i)
+  {
+    EXPECT_NEAR(pixelwise.Mass[i], 2.0 * uniform.Mass[i], 1e-12);
+    EXPECT_NEAR(pixelwise.Energy[i], 2.0 * uniform.Energy[i], 1e-12);
+    EXPECT_NEAR(pixelwise.MomentX[i], 2.0 * uniform.MomentX[i], 1e-12);
+  }
+}
+
+TEST(ExactVoronoi, BruteForceLabelsPickTheNearestSite)
+{
+  const cvt::Grid grid = SquareGrid(4, 0.0, 4.0);
+  const auto labels = cvt::BruteForceLabels(grid, { 0.5, 0.5, 3.5, 3.5 });
+  EXPECT_EQ(labels[0], 0);
+  EXPECT_EQ(labels[15], 1);
+  EXPECT_EQ(labels[1 * 4 + 0], 0);
+}
