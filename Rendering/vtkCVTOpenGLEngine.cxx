@@ -608,6 +608,10 @@ bool vtkCVTOpenGLEngine::MoveSitesToCentroids()
   in.Sums->Deactivate();
   in.Sites[in.CurrentSites]->Deactivate();
   state->PopFramebufferBindings();
+  if (this->MeasureTimings)
+  {
+    glFinish();
+  }
   in.CurrentSites = target;
   in.HaveSums = false;
   return this->CheckGLError("Lloyd update");

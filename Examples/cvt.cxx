@@ -1,0 +1,485 @@
+// cvt: centroidal Voronoi tessellations on the GPU from the command line.
+//   cvt image [options]     CVT of a 2D image domain (density from an image, or uniform)
+//   cvt surface [options]   CVT on a surface (not available yet)
+// Run `cvt --help` for the options. Errors go to stderr with exit status 1 (2 for usage).
+#include "vtkCVTImageFilter.h"
+#include "vtkCVTSceneRenderer.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkImageReader2.h"
+#include "vtkJPEGReader.h"
+#include "vtkMetaImageReader.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTable.h"
+#include "vtkXMLImageDataReader.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+namespace
+{
+const char* Usage = R"(usage: cvt image [options]
+       cvt surface [options]      (not available yet)
+
+Computes a centroidal Voronoi tessellation (CVT) on the GPU (headless: EGL, no display needed).
+
+Input:
+  --input FILE            density image: .png .jpg .jpeg .vti .mha .mhd (default: none, a
+                          uniform density on --domain at --resolution)
+  --array NAME            density array of a .vti/.mha input (default: its active scalars)
+  --invert                dark = dense (for stippling): density = max - value
+  --domain XMIN XMAX YMIN YMAX
+                          physical extent of the image domain (default: the image's own
+                          geometry; with no --input, [-1,1]^2)
+  --resolution N          grid size when there is no --input (default 512)
+Sites:
+  --sites N               number of sites (default 1000)
+  --initial-sites FILE    CSV of initial sites, one "x,y" per line (overrides --sites)
+  --seed S                seed of the initial site sampling (default 1)
+Optimiser:
+  --method lloyd|lbfgs    optimiser (default lloyd; lbfgs is not available yet)
+  --iterations N          iteration cap (default 100)
+  --tolerance T           stop when no pixel changes site or the relative energy decrease
+                          falls below T; 0 runs every iteration (default 1e-6)
+Output:
+  --output DIR            writes sites.vtp, sites.csv, labels.vti, dual.vtp, history.csv and
+                          cvt.png there (default: ./cvt-output)
+  --quiet                 print nothing but errors
+  --help                  this text
+)";
+
+struct Options
+{
+  std::string Command;
+  std::string Input, Array, InitialSites, Output = "cvt-output", Method = "lloyd";
+  bool Invert = false, HaveDomain = false, Quiet = false;
+  double Domain[4] = { -1.0, 1.0, -1.0, 1.0 };
+  int Resolution = 512, Sites = 1000, Iterations = 100;
+  long long Seed = 1;
+  double Tolerance = 1e-6;
+};
+
+[[noreturn]] void Fail(const std::string& message, int status = 1)
+{
+  std::cerr << "cvt: " << message << "\n";
+  std::exit(status);
+}
+
+double ParseNumber(const std::string& option, const char* text)
+{
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || errno != 0 || !std::isfinite(value))
+  {
+    Fail(option + " expects a number, got '" + text + "'", 2);
+  }
+  return value;
+}
+
+long long ParseInteger(const std::string& option, const char* text)
+{
+  char* end = nullptr;
+  errno = 0;
+  const long long value = std::strtoll(text, &end, 10);
+  if (end == text || *end != '\0' || errno != 0)
+  {
+    Fail(option + " expects an integer, got '" + text + "'", 2);
+  }
+  return value;
+}
+
+Options ParseArguments(int argc, char* argv[])
+{
+  Options options;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h")
+  {
+    std::cout << Usage;
+    std::exit(args.empty() ? 2 : 0);
+  }
+  options.Command = args[0];
+  if (options.Command == "surface")
+  {
+    Fail("'cvt surface' is not available yet; only 'cvt image' is", 2);
+  }
+  if (options.Command != "image")
+  {
+    Fail("unknown command '" + options.Command + "'; use 'cvt image' (see cvt --help)", 2);
+  }
+  for (size_t k = 1; k < args.size(); ++k)
+  {
+    const std::string& a = args[k];
+    auto value = [&](int count = 1) -> const char*
+    {
+      if (k + count > args.size() - 1)
+      {
+        Fail(a + " needs " + std::to_string(count) + " value(s)", 2);
+      }
+      return args[++k].c_str();
+    };
+    if (a == "--help" || a == "-h")
+    {
+      std::cout << Usage;
+      std::exit(0);
+    }
+    else if (a == "--input")
+      options.Input = value();
+    else if (a == "--array")
+      options.Array = value();
+    else if (a == "--invert")
+      options.Invert = true;
+    else if (a == "--quiet")
+      options.Quiet = true;
+    else if (a == "--domain")
+    {
+      if (k + 4 > args.size() - 1)
+      {
+        Fail("--domain needs 4 values: XMIN XMAX YMIN YMAX", 2);
+      }
+      for (double& d : options.Domain)
+      {
+        d = ParseNumber(a, args[++k].c_str());
+      }
+      options.HaveDomain = true;
+      if (!(options.Domain[1] > options.Domain[0]) || !(options.Domain[3] > options.Domain[2]))
+      {
+        Fail("--domain needs XMIN < XMAX and YMIN < YMAX", 2);
+      }
+    }
+    else if (a == "--resolution")
+      options.Resolution = static_cast<int>(ParseInteger(a, value()));
+    else if (a == "--sites")
+      options.Sites = static_cast<int>(ParseInteger(a, value()));
+    else if (a == "--initial-sites")
+      options.InitialSites = value();
+    else if (a == "--seed")
+      options.Seed = ParseInteger(a, value());
+    else if (a == "--method")
+      options.Method = value();
+    else if (a == "--iterations")
+      options.Iterations = static_cast<int>(ParseInteger(a, value()));
+    else if (a == "--tolerance")
+      options.Tolerance = ParseNumber(a, value());
+    else if (a == "--output")
+      options.Output = value();
+    else
+      Fail("unknown option '" + a + "' (see cvt --help)", 2);
+  }
+  if (options.Method == "lbfgs")
+  {
+    Fail("--method lbfgs is not available yet; use --method lloyd", 2);
+  }
+  if (options.Method != "lloyd")
+  {
+    Fail("--method must be lloyd or lbfgs, got '" + options.Method + "'", 2);
+  }
+  if (options.Resolution < 1 || options.Resolution > 65536)
+  {
+    Fail("--resolution must be between 1 and 65536", 2);
+  }
+  if (options.Iterations < 0)
+  {
+    Fail("--iterations must be >= 0", 2);
+  }
+  if (!(options.Tolerance >= 0.0))
+  {
+    Fail("--tolerance must be >= 0", 2);
+  }
+  if (options.Sites < 0)
+  {
+    Fail("--sites must be >= 0", 2);
+  }
+  return options;
+}
+
+std::string Extension(const std::string& path)
+{
+  const size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  return ext;
+}
+
+/// Reads the density image and leaves a one-component float array "density" as its scalars.
+vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  if (options.Input.empty())
+  {
+    const int n = options.Resolution;
+    image->SetDimensions(n, n, 1);
+    image->SetSpacing(
+      (options.Domain[1] - options.Domain[0]) / n, (options.Domain[3] - options.Domain[2]) / n, 1.0);
+    image->SetOrigin(options.Domain[0] + 0.5 * image->GetSpacing()[0],
+      options.Domain[2] + 0.5 * image->GetSpacing()[1], 0.0);
+    return image; // no density array: uniform
+  }
+  struct stat info;
+  if (stat(options.Input.c_str(), &info) != 0)
+  {
+    Fail("cannot read --input '" + options.Input + "': no such file");
+  }
+  const std::string ext = Extension(options.Input);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  bool isPicture = false;
+  if (ext == "png")
+  {
+    auto r = vtkSmartPointer<vtkPNGReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+    isPicture = true;
+  }
+  else if (ext == "jpg" || ext == "jpeg")
+  {
+    auto r = vtkSmartPointer<vtkJPEGReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+    isPicture = true;
+  }
+  else if (ext == "vti")
+  {
+    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else if (ext == "mha" || ext == "mhd")
+  {
+    auto r = vtkSmartPointer<vtkMetaImageReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else
+  {
+    Fail("--input '" + options.Input + "' has an unknown type; use .png .jpg .vti .mha");
+  }
+  reader->Update();
+  vtkImageData* read = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!read || read->GetNumberOfPoints() == 0)
+  {
+    Fail("could not read an image from '" + options.Input + "'");
+  }
+  image->ShallowCopy(read);
+  vtkDataArray* values = options.Array.empty()
+    ? image->GetPointData()->GetScalars()
+    : image->GetPointData()->GetArray(options.Array.c_str());
+  if (!values)
+  {
+    Fail(options.Array.empty() ? "'" + options.Input + "' has no scalar array; choose one with --array"
+                               : "'" + options.Input + "' has no point array '" + options.Array + "'");
+  }
+  // Pictures: luminance of the colour channels (alpha ignored), scaled to [0, 1].
+  const int components = values->GetNumberOfComponents();
+  if (!isPicture && components != 1)
+  {
+    Fail("the density array has " + std::to_string(components) + " components; it needs one");
+  }
+  vtkNew<vtkFloatArray> density;
+  density->SetName("density");
+  density->SetNumberOfValues(values->GetNumberOfTuples());
+  const double scale = isPicture ? 1.0 / 255.0 : 1.0;
+  double maximum = -std::numeric_limits<double>::infinity();
+  for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
+  {
+    double v = values->GetComponent(p, 0);
+    if (isPicture && components >= 3)
+    {
+      v = 0.299 * values->GetComponent(p, 0) + 0.587 * values->GetComponent(p, 1) +
+        0.114 * values->GetComponent(p, 2);
+    }
+    v *= scale;
+    density->SetValue(p, static_cast<float>(v));
+    maximum = std::max(maximum, v);
+  }
+  if (options.Invert)
+  {
+    const double top = isPicture ? 1.0 : maximum;
+    for (vtkIdType p = 0; p < density->GetNumberOfValues(); ++p)
+    {
+      density->SetValue(p, static_cast<float>(top - density->GetValue(p)));
+    }
+  }
+  image->GetPointData()->Initialize();
+  image->GetPointData()->SetScalars(density);
+  if (options.HaveDomain)
+  {
+    int dims[3];
+    image->GetDimensions(dims);
+    image->SetExtent(0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1);
+    const double sx = (options.Domain[1] - options.Domain[0]) / dims[0];
+    const double sy = (options.Domain[3] - options.Domain[2]) / dims[1];
+    image->SetSpacing(sx, sy, 1.0);
+    image->SetOrigin(options.Domain[0] + 0.5 * sx, options.Domain[2] + 0.5 * sy, 0.0);
+  }
+  return image;
+}
+
+vtkSmartPointer<vtkPolyData> ReadSitesCsv(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    Fail("cannot read --initial-sites '" + path + "'");
+  }
+  vtkNew<vtkPoints> points;
+  std::string line;
+  int lineNumber = 0;
+  while (std::getline(in, line))
+  {
+    ++lineNumber;
+    if (line.find_first_not_of(" \t\r") == std::string::npos)
+    {
+      continue;
+    }
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    double x, y, z = 0.0;
+    if (!(fields >> x >> y))
+    {
+      if (lineNumber == 1)
+      {
+        continue; // a header line
+      }
+      Fail("--initial-sites '" + path + "' line " + std::to_string(lineNumber) +
+        " is not 'x,y' or 'x,y,z'");
+    }
+    fields >> z;
+    points->InsertNextPoint(x, y, 0.0);
+  }
+  auto sites = vtkSmartPointer<vtkPolyData>::New();
+  sites->SetPoints(points);
+  return sites;
+}
+
+template <typename Writer>
+void Write(vtkDataObject* data, const std::string& path)
+{
+  vtkNew<Writer> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(path.c_str());
+  if (writer->Write() != 1)
+  {
+    Fail("cannot write '" + path + "'");
+  }
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const Options options = ParseArguments(argc, argv);
+  vtkSmartPointer<vtkImageData> image = ReadDensityImage(options);
+
+  vtkNew<vtkCVTImageFilter> cvt;
+  cvt->SetInputData(image);
+  if (image->GetPointData()->GetArray("density"))
+  {
+    cvt->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "density");
+  }
+  if (!options.InitialSites.empty())
+  {
+    cvt->SetInitialSitesData(ReadSitesCsv(options.InitialSites));
+  }
+  cvt->SetNumberOfSites(options.Sites);
+  cvt->SetRandomSeed(static_cast<int>(options.Seed));
+  cvt->SetMaximumNumberOfIterations(options.Iterations);
+  cvt->SetTolerance(options.Tolerance);
+
+  // Filter errors go to stderr through VTK's output window; keep them and fail cleanly.
+  struct ErrorObserver : vtkCommand
+  {
+    static ErrorObserver* New() { return new ErrorObserver; }
+    void Execute(vtkObject*, unsigned long, void* data) override
+    {
+      this->Message = static_cast<const char*>(data);
+    }
+    std::string Message;
+  };
+  vtkNew<ErrorObserver> errors;
+  cvt->AddObserver(vtkCommand::ErrorEvent, errors);
+  cvt->Update();
+  if (!errors->Message.empty() || cvt->GetSitesOutput()->GetNumberOfPoints() == 0)
+  {
+    std::string message = errors->Message.empty() ? "the CVT produced no sites" : errors->Message;
+    Fail(message);
+  }
+
+  if (mkdir(options.Output.c_str(), 0777) != 0 && errno != EEXIST)
+  {
+    Fail("cannot create --output directory '" + options.Output + "'");
+  }
+  const std::string dir = options.Output + "/";
+  vtkPolyData* sites = cvt->GetSitesOutput();
+  Write<vtkXMLPolyDataWriter>(sites, dir + "sites.vtp");
+  Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), dir + "labels.vti");
+  Write<vtkXMLPolyDataWriter>(cvt->GetDualOutput(), dir + "dual.vtp");
+  {
+    std::ofstream csv(dir + "sites.csv");
+    csv << std::setprecision(17);
+    for (vtkIdType i = 0; i < sites->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      sites->GetPoint(i, p);
+      csv << p[0] << "," << p[1] << "\n";
+    }
+    vtkTable* history = cvt->GetHistoryOutput();
+    std::ofstream out(dir + "history.csv");
+    out << "iteration,evaluations,energy,gradient_norm,seconds\n" << std::setprecision(12);
+    for (vtkIdType r = 0; r < history->GetNumberOfRows(); ++r)
+    {
+      out << history->GetValueByName(r, "iteration").ToInt() << ","
+          << history->GetValueByName(r, "evaluations").ToInt() << ","
+          << history->GetValueByName(r, "energy").ToDouble() << ","
+          << history->GetValueByName(r, "gradient_norm").ToDouble() << ","
+          << history->GetValueByName(r, "seconds").ToDouble() << "\n";
+    }
+    if (!csv || !out)
+    {
+      Fail("cannot write the CSV files in '" + options.Output + "'");
+    }
+  }
+  vtkNew<vtkCVTSceneRenderer> scene;
+  vtkSmartPointer<vtkImageData> picture = scene->Render(cvt->GetLabelsOutput(), sites);
+  if (!picture)
+  {
+    Fail("cannot render cvt.png: " + scene->GetLastError());
+  }
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputData(picture);
+  png->SetFileName((dir + "cvt.png").c_str());
+  png->Write();
+
+  if (!options.Quiet)
+  {
+    vtkFieldData* fields = sites->GetFieldData();
+    std::cout << "cvt image: " << sites->GetNumberOfPoints() << " sites, "
+              << fields->GetArray("Iterations")->GetTuple1(0) << " iterations ("
+              << fields->GetAbstractArray("StopReason")->GetVariantValue(0).ToString()
+              << "), energy " << std::setprecision(8) << fields->GetArray("Energy")->GetTuple1(0)
+              << ", |grad F| " << fields->GetArray("GradientNorm")->GetTuple1(0) << "\n"
+              << "  OpenGL: " << cvt->GetContextDescription() << "\n"
+              << "  wrote sites.vtp sites.csv labels.vti dual.vtp history.csv cvt.png in "
+              << options.Output << "\n";
+  }
+  return 0;
+}

@@ -1,0 +1,131 @@
+#include "vtkCVTSceneRenderer.h"
+
+#include "vtkActor.h"
+#include "vtkCVTOpenGLContext.h"
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkImageActor.h"
+#include "vtkImageData.h"
+#include "vtkImageMapToColors.h"
+#include "vtkImageMapper3D.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+vtkStandardNewMacro(vtkCVTSceneRenderer);
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, vtkPolyData* sites)
+{
+  this->LastError.clear();
+  if (!labels || !labels->GetPointData()->GetArray("SiteId"))
+  {
+    this->LastError = "the labels image has no SiteId array";
+    return nullptr;
+  }
+  vtkNew<vtkCVTOpenGLContext> context;
+  if (!context->Initialize())
+  {
+    this->LastError = context->GetLastError();
+    return nullptr;
+  }
+  context->MakeCurrent();
+  vtkOpenGLRenderWindow* window = context->GetRenderWindow();
+
+  double bounds[6];
+  labels->GetBounds(bounds);
+  double spacing[3];
+  labels->GetSpacing(spacing);
+  // The domain reaches half a pixel beyond the first and last pixel centres.
+  const double width = bounds[1] - bounds[0] + spacing[0];
+  const double height = bounds[3] - bounds[2] + spacing[1];
+  const int sizeX = width >= height ? this->Size
+                                    : std::max(16, static_cast<int>(std::lround(this->Size * width / height)));
+  const int sizeY = width >= height ? std::max(16, static_cast<int>(std::lround(this->Size * height / width)))
+                                    : this->Size;
+  window->SetSize(sizeX, sizeY);
+
+  // Pastel colours from a fixed seed: the same result always gives the same picture.
+  double range[2];
+  labels->GetPointData()->GetArray("SiteId")->GetRange(range);
+  const int colours = std::max(1, static_cast<int>(range[1]) + 1);
+  vtkNew<vtkLookupTable> table;
+  table->SetNumberOfTableValues(colours);
+  table->SetTableRange(0, colours - 1);
+  std::mt19937 rng(12345);
+  for (int i = 0; i < colours; ++i)
+  {
+    table->SetTableValue(i, 0.35 + 0.6 * (rng() % 1000) / 1000.0,
+      0.35 + 0.6 * (rng() % 1000) / 1000.0, 0.35 + 0.6 * (rng() % 1000) / 1000.0, 1.0);
+  }
+  table->SetBelowRangeColor(0.0, 0.0, 0.0, 1.0);
+  table->UseBelowRangeColorOn();
+  table->Build();
+
+  vtkNew<vtkImageMapToColors> colour;
+  colour->SetInputData(labels);
+  colour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SiteId");
+  colour->SetLookupTable(table);
+  colour->SetOutputFormatToRGB();
+  vtkNew<vtkImageActor> cells;
+  cells->GetMapper()->SetInputConnection(colour->GetOutputPort());
+  cells->InterpolateOff();
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  renderer->AddActor(cells);
+  vtkNew<vtkPolyDataMapper> siteMapper;
+  vtkNew<vtkActor> siteActor;
+  if (sites && sites->GetNumberOfPoints() > 0)
+  {
+    siteMapper->SetInputData(sites);
+    siteMapper->ScalarVisibilityOff();
+    siteActor->SetMapper(siteMapper);
+    siteActor->GetProperty()->SetColor(0.05, 0.05, 0.05);
+    siteActor->GetProperty()->SetPointSize(this->PointSize);
+    siteActor->GetProperty()->SetRepresentationToPoints();
+    siteActor->SetPosition(0.0, 0.0, 1e-3 * std::max(width, height)); // in front of the cells
+    renderer->AddActor(siteActor);
+  }
+  window->AddRenderer(renderer);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  const double cx = 0.5 * (bounds[0] + bounds[1]), cy = 0.5 * (bounds[2] + bounds[3]);
+  camera->SetFocalPoint(cx, cy, bounds[4]);
+  camera->SetPosition(cx, cy, bounds[4] + 10.0 * std::max(width, height));
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(0.5 * height);
+  renderer->ResetCameraClippingRange();
+
+  window->Render();
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetPixelData(0, 0, sizeX - 1, sizeY - 1, 0, pixels, 0);
+  window->RemoveRenderer(renderer);
+  renderer->ReleaseGraphicsResources(window);
+  context->RestorePrevious();
+
+  auto picture = vtkSmartPointer<vtkImageData>::New();
+  picture->SetDimensions(sizeX, sizeY, 1);
+  pixels->SetName("RGB");
+  picture->GetPointData()->SetScalars(pixels);
+  return picture;
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTSceneRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Size: " << this->Size << "\n";
+  os << indent << "PointSize: " << this->PointSize << "\n";
+}

@@ -1,0 +1,60 @@
+/**
+ * @class   vtkCVTSceneRenderer
+ * @brief   Offscreen picture of a CVT result: cells coloured by site, sites drawn on top.
+ *
+ * Renders with VTK's own OpenGL renderer on the headless context of vtkCVTOpenGLContext, so
+ * no display is needed. Cell colours come from a seeded table, so a result always gives the
+ * same picture.
+ */
+#ifndef vtkCVTSceneRenderer_h
+#define vtkCVTSceneRenderer_h
+
+#include "cvtRenderingModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for return value
+
+#include <string> // for std::string
+
+class vtkImageData;
+class vtkPolyData;
+
+class CVTRENDERING_EXPORT vtkCVTSceneRenderer : public vtkObject
+{
+public:
+  static vtkCVTSceneRenderer* New();
+  vtkTypeMacro(vtkCVTSceneRenderer, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Size of the picture's longer side in pixels (default 800). */
+  vtkSetClampMacro(Size, int, 16, 8192);
+  vtkGetMacro(Size, int);
+  ///@}
+
+  ///@{
+  /** Diameter of the site dots in pixels (default 4). */
+  vtkSetClampMacro(PointSize, double, 0.0, 64.0);
+  vtkGetMacro(PointSize, double);
+  ///@}
+
+  /**
+   * Render `labels` (a 2D image with an int SiteId point array) and `sites` (vertices) into an
+   * RGB image. Returns nullptr with a message in GetLastError() when there is no context.
+   */
+  vtkSmartPointer<vtkImageData> Render(vtkImageData* labels, vtkPolyData* sites);
+  const std::string& GetLastError() const { return this->LastError; }
+
+protected:
+  vtkCVTSceneRenderer() = default;
+  ~vtkCVTSceneRenderer() override = default;
+
+private:
+  vtkCVTSceneRenderer(const vtkCVTSceneRenderer&) = delete;
+  void operator=(const vtkCVTSceneRenderer&) = delete;
+
+  int Size = 800;
+  double PointSize = 4.0;
+  std::string LastError;
+};
+
+#endif
