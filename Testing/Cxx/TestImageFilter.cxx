@@ -1,0 +1,451 @@
+// vtkCVTImageFilter in a pipeline: outputs, determinism, progress, abort, bad input.
+#include "cvtExactVoronoi.h"
+#include "vtkCVTImageFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace
+{
+/// A W x H image over [x0, x0 + W*s] x [y0, y0 + H*s] (pixel centres half a spacing inside).
+vtkSmartPointer<vtkImageData> MakeImage(int width, int height, double x0 = -1.0, double y0 = -1.0,
+  double spacing = -1.0)
+{
+  if (spacing <= 0.0)
+  {
+    spacing = 2.0 / width;
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->SetSpacing(spacing, spacing, 1.0);
+  image->SetOrigin(x0 + 0.5 * spacing, y0 + 0.5 * spacing, 0.0);
+  return image;
+}
+
+void AddDensity(vtkImageData* image, const char* name, float value)
+{
+  vtkNew<vtkFloatArray> density;
+  density->SetName(name);
+  density->SetNumberOfValues(image->GetNumberOfPoints());
+  density->Fill(value);
+  image->GetPointData()->AddArray(density);
+}
+
+vtkSmartPointer<vtkPolyData> MakeSites(const std::vector<double>& xy)
+{
+  vtkNew<vtkPoints> points;
+  for (size_t i = 0; i < xy.size(); i += 2)
+  {
+    points->InsertNextPoint(xy[i], xy[i + 1], 0.0);
+  }
+  auto sites = vtkSmartPointer<vtkPolyData>::New();
+  sites->SetPoints(points);
+  return sites;
+}
+
+/// Captures the filter's error messages instead of printing them.
+class ErrorCatcher : public vtkCommand
+{
+public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Messages.push_back(static_cast<const char*>(data));
+  }
+  std::vector<std::string> Messages;
+};
+
+/// Runs the filter expecting failure: returns the error message, and checks the outputs are empty.
+std::string RunExpectingError(vtkCVTImageFilter* filter)
+{
+  vtkNew<ErrorCatcher> catcher;
+  filter->AddObserver(vtkCommand::ErrorEvent, catcher);
+  filter->Update();
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetLabelsOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetDualOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(filter->GetHistoryOutput()->GetNumberOfRows(), 0);
+  std::string all;
+  for (const std::string& m : catcher->Messages)
+  {
+    all += m;
+  }
+  EXPECT_FALSE(all.empty()) << "no error was reported";
+  return all;
+}
+
+bool Contains(const std::string& text, const std::string& part)
+{
+  return text.find(part) != std::string::npos;
+}
+}
+
+TEST(ImageFilter, ProducesAllOutputs)
+{
+  auto image = MakeImage(64, 48, 2.0, -3.0, 0.05);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(40);
+  filter->SetMaximumNumberOfIterations(15);
+  filter->SetTolerance(0.0);
+  int progressEvents = 0;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progressEvents);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* clientData, void*)
+    { ++*static_cast<int*>(clientData); });
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  filter->Update();
+
+  vtkPolyData* sites = filter->GetSitesOutput();
+  ASSERT_EQ(sites->GetNumberOfPoints(), 40);
+  EXPECT_EQ(sites->GetNumberOfVerts(), 40);
+  ASSERT_NE(sites->GetPointData()->GetArray("SiteId"), nullptr);
+  ASSERT_NE(sites->GetPointData()->GetArray("Mass"), nullptr);
+  ASSERT_NE(sites->GetPointData()->GetArray("Energy"), nullptr);
+  EXPECT_EQ(sites->GetFieldData()->GetArray("Iterations")->GetTuple1(0), 15);
+  // Masses add up to the domain area; energies to the reported total.
+  double mass = 0.0, energy = 0.0;
+  for (vtkIdType i = 0; i < 40; ++i)
+  {
+    mass += sites->GetPointData()->GetArray("Mass")->GetTuple1(i);
+    energy += sites->GetPointData()->GetArray("Energy")->GetTuple1(i);
+    double p[3];
+    sites->GetPoint(i, p);
+    EXPECT_GE(p[0], 2.0);
+    EXPECT_LE(p[0], 2.0 + 64 * 0.05);
+    EXPECT_GE(p[1], -3.0);
+    EXPECT_LE(p[1], -3.0 + 48 * 0.05);
+  }
+  EXPECT_NEAR(mass, 64 * 48 * 0.05 * 0.05, 1e-3);
+  EXPECT_NEAR(energy, sites->GetFieldData()->GetArray("Energy")->GetTuple1(0), 1e-9);
+
+  // Labels: the input geometry, every pixel labelled, agreeing with brute force.
+  vtkImageData* labels = filter->GetLabelsOutput();
+  int dims[3];
+  labels->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 64);
+  EXPECT_EQ(dims[1], 48);
+  EXPECT_DOUBLE_EQ(labels->GetOrigin()[0], image->GetOrigin()[0]);
+  EXPECT_DOUBLE_EQ(labels->GetSpacing()[1], 0.05);
+  vtkDataArray* ids = labels->GetPointData()->GetArray("SiteId");
+  ASSERT_NE(ids, nullptr);
+  EXPECT_TRUE(vtkIntArray::SafeDownCast(ids) != nullptr);
+  cvt::Grid grid;
+  grid.Width = 64;
+  grid.Height = 48;
+  grid.Origin[0] = 2.0;
+  grid.Origin[1] = -3.0;
+  grid.Spacing[0] = grid.Spacing[1] = 0.05;
+  std::vector<double> xy;
+  for (vtkIdType i = 0; i < 40; ++i)
+  {
+    double p[3];
+    sites->GetPoint(i, p);
+    xy.push_back(p[0]);
+    xy.push_back(p[1]);
+  }
+  const std::vector<int> truth = cvt::BruteForceLabels(grid, xy);
+  int wrong = 0;
+  for (vtkIdType p = 0; p < ids->GetNumberOfTuples(); ++p)
+  {
+    wrong += static_cast<int>(ids->GetTuple1(p)) != truth[p];
+  }
+  EXPECT_LE(wrong, 3);
+
+  // Dual: counter-clockwise triangles, no duplicates, joining Voronoi neighbours.
+  vtkPolyData* dual = filter->GetDualOutput();
+  EXPECT_GT(dual->GetNumberOfPolys(), 40);
+  std::set<std::set<vtkIdType>> seen;
+  std::map<std::pair<vtkIdType, vtkIdType>, int> directedEdges;
+  vtkIdType npts;
+  const vtkIdType* tri;
+  for (dual->GetPolys()->InitTraversal(); dual->GetPolys()->GetNextCell(npts, tri);)
+  {
+    ASSERT_EQ(npts, 3);
+    double a[3], b[3], c[3];
+    dual->GetPoint(tri[0], a);
+    dual->GetPoint(tri[1], b);
+    dual->GetPoint(tri[2], c);
+    EXPECT_GT((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]), 0.0);
+    EXPECT_TRUE(seen.insert({ tri[0], tri[1], tri[2] }).second) << "duplicate triangle";
+    for (int e = 0; e < 3; ++e)
+    {
+      const std::pair<vtkIdType, vtkIdType> edge(tri[e], tri[(e + 1) % 3]);
+      EXPECT_EQ(++directedEdges[edge], 1) << "inconsistent orientation";
+    }
+  }
+
+  // History: one row per iteration plus the initial state, energy going down.
+  vtkTable* history = filter->GetHistoryOutput();
+  ASSERT_EQ(history->GetNumberOfRows(), 16);
+  for (const char* column : { "iteration", "evaluations", "energy", "gradient_norm", "seconds" })
+  {
+    EXPECT_NE(history->GetColumnByName(column), nullptr) << column;
+  }
+  EXPECT_LT(history->GetValueByName(15, "energy").ToDouble(),
+    history->GetValueByName(0, "energy").ToDouble());
+  EXPECT_GE(progressEvents, 15);
+}
+
+TEST(ImageFilter, SameSeedSameOutput)
+{
+  auto image = MakeImage(32, 32);
+  vtkNew<vtkCVTImageFilter> a, b;
+  for (vtkCVTImageFilter* f : { a.Get(), b.Get() })
+  {
+    f->SetInputData(image);
+    f->SetNumberOfSites(12);
+    f->SetRandomSeed(42);
+    f->SetMaximumNumberOfIterations(5);
+    f->Update();
+  }
+  ASSERT_EQ(a->GetSitesOutput()->GetNumberOfPoints(), 12);
+  for (vtkIdType i = 0; i < 12; ++i)
+  {
+    double p[3], q[3];
+    a->GetSitesOutput()->GetPoint(i, p);
+    b->GetSitesOutput()->GetPoint(i, q);
+    EXPECT_EQ(p[0], q[0]);
+    EXPECT_EQ(p[1], q[1]);
+  }
+  b->SetRandomSeed(43);
+  b->Update();
+  double p[3], q[3];
+  a->GetSitesOutput()->GetPoint(0, p);
+  b->GetSitesOutput()->GetPoint(0, q);
+  EXPECT_NE(p[0], q[0]);
+}
+
+TEST(ImageFilter, DensityPullsSitesAndInitialSitesAreUsed)
+{
+  // Density 1 on the left half, 0 on the right: every site stays on the left.
+  auto image = MakeImage(32, 32);
+  vtkNew<vtkUnsignedCharArray> density;
+  density->SetName("rho");
+  density->SetNumberOfValues(32 * 32);
+  for (int j = 0; j < 32; ++j)
+  {
+    for (int i = 0; i < 32; ++i)
+    {
+      density->SetValue(j * 32 + i, i < 16 ? 200 : 0);
+    }
+  }
+  image->GetPointData()->AddArray(density);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rho");
+  filter->SetInitialSitesData(MakeSites({ -0.5, -0.5, -0.5, 0.5, -0.2, 0.1 }));
+  filter->SetMaximumNumberOfIterations(30);
+  filter->Update();
+  vtkPolyData* sites = filter->GetSitesOutput();
+  ASSERT_EQ(sites->GetNumberOfPoints(), 3);
+  for (vtkIdType i = 0; i < 3; ++i)
+  {
+    EXPECT_LT(sites->GetPoint(i)[0], 0.0);
+  }
+}
+
+TEST(ImageFilter, AbortStopsIterations)
+{
+  auto image = MakeImage(32, 32);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(10);
+  filter->SetMaximumNumberOfIterations(1000);
+  filter->SetTolerance(0.0);
+  vtkNew<vtkCallbackCommand> abortSoon;
+  abortSoon->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
+    {
+      auto* f = static_cast<vtkCVTImageFilter*>(caller);
+      if (f->GetProgress() > 0.002)
+      {
+        f->AbortExecuteOn();
+      }
+    });
+  filter->AddObserver(vtkCommand::ProgressEvent, abortSoon);
+  filter->Update();
+  EXPECT_LT(filter->GetHistoryOutput()->GetNumberOfRows(), 20);
+}
+
+TEST(ImageFilter, PrintSelfNamesTheParameters)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  std::ostringstream out;
+  filter->Print(out);
+  EXPECT_TRUE(Contains(out.str(), "NumberOfSites: 1000"));
+  EXPECT_TRUE(Contains(out.str(), "Tolerance"));
+}
+
+// --- Bad input: a clear error, empty outputs, never a crash.
+
+TEST(ImageFilterBadInput, EmptyImage)
+{
+  vtkNew<vtkImageData> image;
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "empty"));
+}
+
+TEST(ImageFilterBadInput, ThreeDimensionalImage)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(8, 8, 3);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(4);
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "3D"));
+}
+
+TEST(ImageFilterBadInput, MoreSitesThanPixels)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(4, 4));
+  filter->SetNumberOfSites(17);
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "exceeds the 16 pixels"));
+}
+
+TEST(ImageFilterBadInput, ZeroSites)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(4, 4));
+  filter->SetNumberOfSites(0);
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "at least one site"));
+}
+
+TEST(ImageFilterBadInput, NaNDensity)
+{
+  auto image = MakeImage(8, 8);
+  AddDensity(image, "rho", 1.0f);
+  vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("rho"))
+    ->SetValue(5, std::numeric_limits<float>::quiet_NaN());
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(4);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rho");
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "not finite"));
+}
+
+TEST(ImageFilterBadInput, NegativeDensity)
+{
+  auto image = MakeImage(8, 8);
+  AddDensity(image, "rho", 1.0f);
+  vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("rho"))->SetValue(3, -1.0f);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(4);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rho");
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "negative"));
+}
+
+TEST(ImageFilterBadInput, AllZeroDensity)
+{
+  auto image = MakeImage(8, 8);
+  AddDensity(image, "rho", 0.0f);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(4);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rho");
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "zero everywhere"));
+}
+
+TEST(ImageFilterBadInput, MissingDensityArray)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(8, 8));
+  filter->SetNumberOfSites(4);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "nothere");
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "'nothere'"));
+}
+
+TEST(ImageFilterBadInput, MultiComponentDensity)
+{
+  auto image = MakeImage(8, 8);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetName("rgb");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(64);
+  rgb->Fill(10);
+  image->GetPointData()->AddArray(rgb);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(4);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rgb");
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "3 components"));
+}
+
+TEST(ImageFilterBadInput, SitesOutsideTheDomain)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(8, 8));
+  filter->SetInitialSitesData(MakeSites({ 0.0, 0.0, 1.5, 0.0 }));
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "outside the domain"));
+}
+
+TEST(ImageFilterBadInput, DuplicatedSites)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(8, 8));
+  filter->SetInitialSitesData(MakeSites({ 0.25, 0.25, 0.5, 0.5, 0.25, 0.25 }));
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "duplicates"));
+}
+
+TEST(ImageFilterBadInput, EmptyInitialSites)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(8, 8));
+  filter->SetInitialSitesData(MakeSites({}));
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "no sites"));
+}
+
+TEST(ImageFilterBadInput, GridBeyondTheLargestTexture)
+{
+  // 40000 x 1 pixels: wider than any GPU's largest texture (llvmpipe: 16384), yet tiny.
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(40000, 1));
+  filter->SetNumberOfSites(3);
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "largest texture"));
+}
+
+TEST(ImageFilterBadInput, NoOpenGLContext)
+{
+  setenv("CVT_OPENGL_CONTEXT", "none", 1);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(8, 8));
+  filter->SetNumberOfSites(3);
+  const std::string message = RunExpectingError(filter);
+  unsetenv("CVT_OPENGL_CONTEXT");
+  EXPECT_TRUE(Contains(message, "no OpenGL >= 3.2 context"));
+}
+
+TEST(ImageFilterBadInput, ThenAGoodRunStillWorks)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(8, 8));
+  filter->SetNumberOfSites(0);
+  RunExpectingError(filter);
+  filter->SetNumberOfSites(3);
+  filter->Update();
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 3);
+}

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Bad input to `cvt image`: a non-zero exit status and a message that says what to fix.
+# Usage: cli-errors.sh PATH/TO/cvt
+set -u
+CVT=${1:?usage: cli-errors.sh PATH/TO/cvt}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+bad=0
+expect_error() { # expect_error "message part" args...
+  local part=$1; shift
+  if env -u DISPLAY "$CVT" "$@" --output "$T/out" > "$T/log" 2>&1; then
+    echo "accepted: cvt $*"; bad=1
+  elif ! grep -q -- "$part" "$T/log"; then
+    echo "cvt $* failed without saying '$part':"; cat "$T/log"; bad=1
+  fi
+}
+printf '%s\n' '0,0' '2,0' > "$T/outside.csv"
+printf '%s\n' '0.1,0.1' '0.1,0.1' > "$T/duplicate.csv"
+printf '%s\n' '0.1,0.1' 'oops' > "$T/garbled.csv"
+: > "$T/empty.csv"
+expect_error "at least one site" image --resolution 16 --sites 0
+expect_error "exceeds the 16 pixels" image --resolution 4 --sites 17
+expect_error "outside the domain" image --resolution 16 --initial-sites "$T/outside.csv"
+expect_error "duplicates" image --resolution 16 --initial-sites "$T/duplicate.csv"
+expect_error "not 'x,y'" image --resolution 16 --initial-sites "$T/garbled.csv"
+expect_error "no sites" image --resolution 16 --initial-sites "$T/empty.csv"
+expect_error "no such file" image --input "$T/missing.png"
+expect_error "unknown option" image --frobnicate
+expect_error "expects a number" image --tolerance abc
+expect_error "XMIN < XMAX" image --domain 1 -1 0 1
+expect_error "lloyd or lbfgs" image --method newton
+# No OpenGL context at all.
+if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
+  echo "ran without an OpenGL context"; bad=1
+elif ! grep -q "no OpenGL >= 3.2 context" "$T/log"; then
+  echo "no-context failure without a clear message:"; cat "$T/log"; bad=1
+fi
+[ $bad -eq 0 ] && echo "cli errors: ok" || { echo "cli errors: FAILED"; exit 1; }
