@@ -12,12 +12,14 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "vtkCVTCollectFS.h"
 #include "vtkCVTJumpFloodFS.h"
 #include "vtkCVTLloydFS.h"
 #include "vtkCVTReduceFS.h"
 #include "vtkCVTReduceVS.h"
 #include "vtkCVTSeedFS.h"
 #include "vtkCVTSeedVS.h"
+#include "vtkCVTSplitPixelsFS.h"
 
 #include <algorithm>
 #include <chrono>
@@ -29,7 +31,7 @@ vtkStandardNewMacro(vtkCVTOpenGLEngine);
 
 namespace
 {
-constexpr int MaxCandidates = 4; // must match vtkCVTReduceVS.glsl
+constexpr int MaxCandidates = 4; // must match vtkCVTSplitPixelsFS.glsl
 
 int NextPowerOfTwo(double value)
 {
@@ -72,13 +74,18 @@ struct vtkCVTOpenGLEngine::Internals
   vtkNew<vtkTextureObject> Density;
   vtkNew<vtkTextureObject> Seeds[2]; // jump flooding ping-pong
   vtkNew<vtkTextureObject> Sites[2]; // Lloyd ping-pong
+  vtkNew<vtkTextureObject> Candidates; // split pixels: candidate sites and collectors
+  vtkNew<vtkTextureObject> Pieces[MaxCandidates]; // split pixels: each candidate's piece
   vtkNew<vtkTextureObject> Sums;
   vtkNew<vtkTextureObject> Radius;
+  vtkNew<vtkOpenGLFramebufferObject> SplitFramebuffer;
   vtkNew<vtkOpenGLFramebufferObject> SeedsFramebuffer[2];
   vtkNew<vtkOpenGLFramebufferObject> SitesFramebuffer[2];
   vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray; // attribute-less point draws
   std::unique_ptr<vtkOpenGLQuadHelper> JumpFloodQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> SplitQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CollectQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> LloydQuad;
   int CurrentSeeds = 0; // which Seeds texture holds the last labelling
   int CurrentSites = 0;
@@ -87,6 +94,12 @@ struct vtkCVTOpenGLEngine::Internals
   void Release(vtkOpenGLRenderWindow* window)
   {
     this->Density->ReleaseGraphicsResources(window);
+    this->Candidates->ReleaseGraphicsResources(window);
+    for (auto& piece : this->Pieces)
+    {
+      piece->ReleaseGraphicsResources(window);
+    }
+    this->SplitFramebuffer->ReleaseGraphicsResources(window);
     this->Sums->ReleaseGraphicsResources(window);
     this->Radius->ReleaseGraphicsResources(window);
     this->SumsFramebuffer->ReleaseGraphicsResources(window);
@@ -98,15 +111,13 @@ struct vtkCVTOpenGLEngine::Internals
       this->SitesFramebuffer[i]->ReleaseGraphicsResources(window);
     }
     this->EmptyVertexArray->ReleaseGraphicsResources();
-    if (this->JumpFloodQuad)
+    for (auto* quad : { &this->JumpFloodQuad, &this->SplitQuad, &this->CollectQuad, &this->LloydQuad })
     {
-      this->JumpFloodQuad->ReleaseGraphicsResources(window);
-      this->JumpFloodQuad.reset();
-    }
-    if (this->LloydQuad)
-    {
-      this->LloydQuad->ReleaseGraphicsResources(window);
-      this->LloydQuad.reset();
+      if (*quad)
+      {
+        (*quad)->ReleaseGraphicsResources(window);
+        quad->reset();
+      }
     }
     this->HaveSums = false;
   }
@@ -195,6 +206,21 @@ bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindo
   return complete;
 }
 
+/// Creates a full-screen quad program on first use and binds it; nullptr if it did not compile.
+vtkShaderProgram* ReadyQuad(
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* window, const char* fragment)
+{
+  if (!quad)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fragment, ""));
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  return quad->Program && quad->Program->GetCompiled() ? quad->Program : nullptr;
+}
+
 /// Reads a float render target back (RGBA or R).
 void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
   int attachment, int width, int height, GLenum format, float* out)
@@ -240,6 +266,7 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
 
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
   in.Release(window);
   this->Grid = grid;
@@ -251,6 +278,25 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   {
     ok = AllocateFloatTexture(in.Seeds[i], window, grid.Width, grid.Height, 4) &&
       AttachTargets(in.SeedsFramebuffer[i], window, in.Seeds[i], nullptr, true);
+  }
+  ok = ok && AllocateFloatTexture(in.Candidates, window, grid.Width, grid.Height, 4);
+  for (int k = 0; k < MaxCandidates && ok; ++k)
+  {
+    ok = AllocateFloatTexture(in.Pieces[k], window, grid.Width, grid.Height, 4);
+  }
+  if (ok)
+  {
+    in.SplitFramebuffer->SetContext(window);
+    state->PushFramebufferBindings();
+    in.SplitFramebuffer->Bind();
+    in.SplitFramebuffer->AddColorAttachment(0, in.Candidates);
+    for (int k = 0; k < MaxCandidates; ++k)
+    {
+      in.SplitFramebuffer->AddColorAttachment(1 + k, in.Pieces[k]);
+    }
+    in.SplitFramebuffer->ActivateDrawBuffers(1 + MaxCandidates);
+    ok = in.SplitFramebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
+    state->PopFramebufferBindings();
   }
   if (!ok)
   {
@@ -395,16 +441,8 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
     steps.push_back(step);
   }
 
-  if (!in.JumpFloodQuad)
-  {
-    in.JumpFloodQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, vtkCVTJumpFloodFS, ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(in.JumpFloodQuad->Program);
-  }
-  vtkShaderProgram* jump = in.JumpFloodQuad->Program;
-  if (!jump || !jump->GetCompiled())
+  vtkShaderProgram* jump = ReadyQuad(in.JumpFloodQuad, window, vtkCVTJumpFloodFS);
+  if (!jump)
   {
     state->PopFramebufferBindings();
     return this->Fail("the jump flooding shader did not compile");
@@ -439,53 +477,100 @@ bool vtkCVTOpenGLEngine::Reduce()
   const int gridSize[2] = { this->Grid.Width, this->Grid.Height };
   const float metric[2] = { static_cast<float>(this->Grid.Spacing[0]),
     static_cast<float>(this->Grid.Spacing[1]) };
+  vtkTextureObject* seeds = in.Seeds[in.CurrentSeeds];
+  // The other jump flooding texture is free now: it receives the collected sums.
+  vtkTextureObject* collected = in.Seeds[1 - in.CurrentSeeds];
 
   vtkOpenGLState::ScopedglViewport viewport(state);
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFunction(state);
+  state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
+  state->vtkglViewport(0, 0, gridSize[0], gridSize[1]);
   state->PushFramebufferBindings();
-  in.SumsFramebuffer->Bind();
-  in.SumsFramebuffer->ActivateDrawBuffers(2);
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
 
+  // Step 1: split pixels between candidate sites (fragment pass over the grid).
+  vtkShaderProgram* split = ReadyQuad(in.SplitQuad, window, vtkCVTSplitPixelsFS);
+  if (!split)
+  {
+    state->PopFramebufferBindings();
+    return this->Fail("the pixel splitting shader did not compile");
+  }
+  in.SplitFramebuffer->Bind();
+  in.SplitFramebuffer->ActivateDrawBuffers(1 + MaxCandidates);
+  seeds->Activate();
+  in.Density->Activate();
+  split->SetUniformi("seeds", seeds->GetTextureUnit());
+  split->SetUniformi("density", in.Density->GetTextureUnit());
+  split->SetUniform2i("gridSize", gridSize);
+  split->SetUniform2f("metric", metric);
+  split->SetUniformi("candidateLimit", this->SplitBoundaryPixels ? MaxCandidates : 1);
+  in.SplitQuad->Render();
+  in.Density->Deactivate();
+
+  // Step 2: every pixel collects the pieces its neighbours hand to its site.
+  vtkShaderProgram* collect = ReadyQuad(in.CollectQuad, window, vtkCVTCollectFS);
+  if (!collect)
+  {
+    seeds->Deactivate();
+    state->PopFramebufferBindings();
+    return this->Fail("the collecting shader did not compile");
+  }
+  in.SeedsFramebuffer[1 - in.CurrentSeeds]->Bind();
+  in.SeedsFramebuffer[1 - in.CurrentSeeds]->ActivateDrawBuffers(1);
+  in.Candidates->Activate();
+  collect->SetUniformi("candidates", in.Candidates->GetTextureUnit());
+  const char* pieceNames[MaxCandidates] = { "piece0", "piece1", "piece2", "piece3" };
+  for (int k = 0; k < MaxCandidates; ++k)
+  {
+    in.Pieces[k]->Activate();
+    collect->SetUniformi(pieceNames[k], in.Pieces[k]->GetTextureUnit());
+  }
+  collect->SetUniform2i("gridSize", gridSize);
+  in.CollectQuad->Render();
+  for (int k = 0; k < MaxCandidates; ++k)
+  {
+    in.Pieces[k]->Deactivate();
+  }
+  in.Candidates->Deactivate();
+
+  // Step 3: one point per pixel, scattered to its site's slot; target 0 sums, target 1 keeps
+  // the maximum. vtkOpenGLState caches one blend equation for all targets, so the per-target
+  // one is set directly and put back to FUNC_ADD afterwards.
   vtkShaderProgram* reduce =
     window->GetShaderCache()->ReadyShaderProgram(vtkCVTReduceVS, vtkCVTReduceFS, "");
   if (!reduce)
   {
+    seeds->Deactivate();
     state->PopFramebufferBindings();
     return this->Fail("the reduction shader did not compile");
   }
-  in.Seeds[in.CurrentSeeds]->Activate();
-  in.Density->Activate();
-  reduce->SetUniformi("seeds", in.Seeds[in.CurrentSeeds]->GetTextureUnit());
-  reduce->SetUniformi("density", in.Density->GetTextureUnit());
+  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
+  in.SumsFramebuffer->Bind();
+  in.SumsFramebuffer->ActivateDrawBuffers(2);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  collected->Activate();
+  reduce->SetUniformi("seeds", seeds->GetTextureUnit());
+  reduce->SetUniformi("collected", collected->GetTextureUnit());
   reduce->SetUniform2i("gridSize", gridSize);
   reduce->SetUniform2i("slotSize", this->SlotSize);
   reduce->SetUniform2f("metric", metric);
   reduce->SetUniformf(
     "radiusScale", static_cast<float>(1.0 / std::min(this->Grid.Spacing[0], this->Grid.Spacing[1])));
-  const int candidates = this->SplitBoundaryPixels ? MaxCandidates : 1;
-  reduce->SetUniformi("candidateLimit", candidates);
-
-  // Target 0 sums, target 1 keeps the maximum. vtkOpenGLState caches one blend equation for
-  // all targets, so the per-target one is set directly and put back to FUNC_ADD afterwards.
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   state->vtkglBlendEquation(GL_FUNC_ADD);
   glBlendEquationi(1, GL_MAX);
   in.EmptyVertexArray->Bind();
-  glDrawArraysInstanced(
-    GL_POINTS, 0, static_cast<GLsizei>(this->Grid.NumberOfPixels()), candidates);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(this->Grid.NumberOfPixels()));
   in.EmptyVertexArray->Release();
   glBlendEquationi(1, GL_FUNC_ADD);
-  in.Density->Deactivate();
-  in.Seeds[in.CurrentSeeds]->Deactivate();
+  collected->Deactivate();
+  seeds->Deactivate();
   state->PopFramebufferBindings();
   in.HaveSums = true;
   return this->CheckGLError("regional reduction");
@@ -578,16 +663,8 @@ bool vtkCVTOpenGLEngine::MoveSitesToCentroids()
   const int target = 1 - in.CurrentSites;
   in.SitesFramebuffer[target]->Bind();
   in.SitesFramebuffer[target]->ActivateDrawBuffers(1);
-  if (!in.LloydQuad)
-  {
-    in.LloydQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, vtkCVTLloydFS, ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(in.LloydQuad->Program);
-  }
-  vtkShaderProgram* lloyd = in.LloydQuad->Program;
-  if (!lloyd || !lloyd->GetCompiled())
+  vtkShaderProgram* lloyd = ReadyQuad(in.LloydQuad, window, vtkCVTLloydFS);
+  if (!lloyd)
   {
     state->PopFramebufferBindings();
     return this->Fail("the Lloyd update shader did not compile");
