@@ -230,8 +230,8 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
   {
     const int n = options.Resolution;
     image->SetDimensions(n, n, 1);
-    image->SetSpacing(
-      (options.Domain[1] - options.Domain[0]) / n, (options.Domain[3] - options.Domain[2]) / n, 1.0);
+    image->SetSpacing((options.Domain[1] - options.Domain[0]) / n,
+      (options.Domain[3] - options.Domain[2]) / n, 1.0);
     image->SetOrigin(options.Domain[0] + 0.5 * image->GetSpacing()[0],
       options.Domain[2] + 0.5 * image->GetSpacing()[1], 0.0);
     return image; // no density array: uniform
@@ -286,8 +286,9 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
     : image->GetPointData()->GetArray(options.Array.c_str());
   if (!values)
   {
-    Fail(options.Array.empty() ? "'" + options.Input + "' has no scalar array; choose one with --array"
-                               : "'" + options.Input + "' has no point array '" + options.Array + "'");
+    Fail(options.Array.empty()
+        ? "'" + options.Input + "' has no scalar array; choose one with --array"
+        : "'" + options.Input + "' has no point array '" + options.Array + "'");
   }
   // Pictures: luminance of the colour channels (alpha ignored), scaled to [0, 1].
   const int components = values->GetNumberOfComponents();
@@ -372,7 +373,7 @@ vtkSmartPointer<vtkPolyData> ReadSitesCsv(const std::string& path)
   return sites;
 }
 
-template <typename Writer>
+template<typename Writer>
 void Write(vtkDataObject* data, const std::string& path)
 {
   vtkNew<Writer> writer;

@@ -78,7 +78,7 @@ vtkSmartPointer<vtkCellArray> DualTriangles(vtkPolyData* sites, const cvt::Grid&
   return triangles;
 }
 
-template <typename T>
+template<typename T>
 void AddFieldValue(vtkFieldData* fields, const char* name, T value)
 {
   vtkNew<vtkDoubleArray> array;
@@ -227,7 +227,7 @@ int vtkCVTImageFilter::RequestData(
   if (dims[2] != 1)
   {
     vtkErrorMacro("The input image is 3D (" << dims[0] << " x " << dims[1] << " x " << dims[2]
-                                           << "); give a 2D image in the XY plane (one slice).");
+                                            << "); give a 2D image in the XY plane (one slice).");
     return 0;
   }
   double spacing[3], origin[3];
@@ -235,8 +235,8 @@ int vtkCVTImageFilter::RequestData(
   image->GetOrigin(origin);
   if (!(spacing[0] > 0.0) || !(spacing[1] > 0.0))
   {
-    vtkErrorMacro("The input image has a non-positive spacing (" << spacing[0] << ", "
-                                                                << spacing[1] << "); give positive spacings.");
+    vtkErrorMacro("The input image has a non-positive spacing (" << spacing[0] << ", " << spacing[1]
+                                                                 << "); give positive spacings.");
     return 0;
   }
   const int* extent = image->GetExtent();
@@ -259,14 +259,15 @@ int vtkCVTImageFilter::RequestData(
     const char* name = arrayInfo->Get(vtkDataObject::FIELD_NAME());
     if (!array)
     {
-      vtkErrorMacro("The density array '" << name
-                                          << "' is not a point array of the input image; choose one of its point arrays.");
+      vtkErrorMacro("The density array '"
+        << name << "' is not a point array of the input image; choose one of its point arrays.");
       return 0;
     }
     if (array->GetNumberOfComponents() != 1)
     {
-      vtkErrorMacro("The density array '" << name << "' has " << array->GetNumberOfComponents()
-                                          << " components; a density needs exactly one (convert colours to luminance first).");
+      vtkErrorMacro("The density array '"
+        << name << "' has " << array->GetNumberOfComponents()
+        << " components; a density needs exactly one (convert colours to luminance first).");
       return 0;
     }
     if (array->GetNumberOfTuples() != grid.NumberOfPixels())

@@ -43,7 +43,8 @@ bool vtkCVTEGLRenderWindow::CreateHeadlessContext()
     {
       for (EGLint i = 0; i < count && !this->Context; ++i)
       {
-        this->TryDisplay(getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr), "device");
+        this->TryDisplay(
+          getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr), "device");
       }
     }
   }
@@ -104,7 +105,8 @@ bool vtkCVTEGLRenderWindow::TryDisplay(void* displayHandle, const char* platform
   bool pbuffer = eglChooseConfig(display, pbufferConfig, &config, 1, &numConfigs) && numConfigs > 0;
   if (!pbuffer && !(eglChooseConfig(display, anyConfig, &config, 1, &numConfigs) && numConfigs > 0))
   {
-    this->LastError = std::string("no OpenGL-capable EGL config on the ") + platformName + " platform";
+    this->LastError =
+      std::string("no OpenGL-capable EGL config on the ") + platformName + " platform";
     return false;
   }
   const EGLint contextAttributes[] = { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 2,
@@ -112,8 +114,8 @@ bool vtkCVTEGLRenderWindow::TryDisplay(void* displayHandle, const char* platform
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
   if (context == EGL_NO_CONTEXT)
   {
-    this->LastError =
-      std::string("no OpenGL 3.2 core context could be created on the ") + platformName + " platform";
+    this->LastError = std::string("no OpenGL 3.2 core context could be created on the ") +
+      platformName + " platform";
     return false;
   }
   // A small pbuffer gives VTK a default framebuffer to query; surfaceless works without.
@@ -125,8 +127,8 @@ bool vtkCVTEGLRenderWindow::TryDisplay(void* displayHandle, const char* platform
   }
   if (!eglMakeCurrent(display, surface, surface, context))
   {
-    this->LastError = std::string("the EGL context of the ") + platformName +
-      " platform could not be made current";
+    this->LastError =
+      std::string("the EGL context of the ") + platformName + " platform could not be made current";
     if (surface != EGL_NO_SURFACE)
     {
       eglDestroySurface(display, surface);

@@ -183,8 +183,7 @@ void vtkCVTOpenGLContext::RestorePrevious()
 void vtkCVTOpenGLContext::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Context: " << (this->Window ? this->Description : std::string("(none)"))
-     << "\n";
+  os << indent << "Context: " << (this->Window ? this->Description : std::string("(none)")) << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   if (!this->LastError.empty())
   {

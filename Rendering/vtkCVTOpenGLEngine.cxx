@@ -72,9 +72,9 @@ double MillisecondsSince(Clock::time_point start)
 struct vtkCVTOpenGLEngine::Internals
 {
   vtkNew<vtkTextureObject> Density;
-  vtkNew<vtkTextureObject> Seeds[2]; // jump flooding ping-pong
-  vtkNew<vtkTextureObject> Sites[2]; // Lloyd ping-pong
-  vtkNew<vtkTextureObject> Candidates; // split pixels: candidate sites and collectors
+  vtkNew<vtkTextureObject> Seeds[2];              // jump flooding ping-pong
+  vtkNew<vtkTextureObject> Sites[2];              // Lloyd ping-pong
+  vtkNew<vtkTextureObject> Candidates;            // split pixels: candidate sites and collectors
   vtkNew<vtkTextureObject> Pieces[MaxCandidates]; // split pixels: each candidate's piece
   vtkNew<vtkTextureObject> Sums;
   vtkNew<vtkTextureObject> Radius;
@@ -111,7 +111,8 @@ struct vtkCVTOpenGLEngine::Internals
       this->SitesFramebuffer[i]->ReleaseGraphicsResources(window);
     }
     this->EmptyVertexArray->ReleaseGraphicsResources();
-    for (auto* quad : { &this->JumpFloodQuad, &this->SplitQuad, &this->CollectQuad, &this->LloydQuad })
+    for (auto* quad :
+      { &this->JumpFloodQuad, &this->SplitQuad, &this->CollectQuad, &this->LloydQuad })
     {
       if (*quad)
       {
@@ -270,6 +271,10 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   Internals& in = *this->Internal;
   in.Release(window);
   this->Grid = grid;
+  this->GridSize[0] = grid.Width;
+  this->GridSize[1] = grid.Height;
+  this->Metric[0] = static_cast<float>(grid.Spacing[0]);
+  this->Metric[1] = static_cast<float>(grid.Spacing[1]);
   this->NumberOfSites = 0;
   this->FullStep = std::max(1, NextPowerOfTwo(std::max(grid.Width, grid.Height)) / 2);
   this->NextStep = this->FullStep;
@@ -330,8 +335,10 @@ bool vtkCVTOpenGLEngine::SetSites(const std::vector<double>& sites)
   std::vector<float> texels(static_cast<size_t>(slotWidth) * slotHeight * 4, 0.0f);
   for (int i = 0; i < n; ++i)
   {
-    texels[4 * i + 0] = static_cast<float>((sites[2 * i] - this->Grid.Origin[0]) / this->Grid.Spacing[0]);
-    texels[4 * i + 1] = static_cast<float>((sites[2 * i + 1] - this->Grid.Origin[1]) / this->Grid.Spacing[1]);
+    texels[4 * i + 0] =
+      static_cast<float>((sites[2 * i] - this->Grid.Origin[0]) / this->Grid.Spacing[0]);
+    texels[4 * i + 1] =
+      static_cast<float>((sites[2 * i + 1] - this->Grid.Origin[1]) / this->Grid.Spacing[1]);
   }
 
   ScopedContext current(this->Context);
@@ -370,9 +377,6 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
-  const int gridSize[2] = { this->Grid.Width, this->Grid.Height };
-  const float metric[2] = { static_cast<float>(this->Grid.Spacing[0]),
-    static_cast<float>(this->Grid.Spacing[1]) };
 
   vtkOpenGLState::ScopedglViewport viewport(state);
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
@@ -381,7 +385,7 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglViewport(0, 0, gridSize[0], gridSize[1]);
+  state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   state->PushFramebufferBindings();
 
   // Seed: clear to "no site", then one point per site (lowest id wins a shared pixel), then
@@ -401,7 +405,7 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   in.Sites[in.CurrentSites]->Activate();
   seed->SetUniformi("sites", in.Sites[in.CurrentSites]->GetTextureUnit());
   seed->SetUniform2i("slotSize", this->SlotSize);
-  seed->SetUniform2i("gridSize", gridSize);
+  seed->SetUniform2i("gridSize", this->GridSize);
   seed->SetUniformi("numberOfSites", this->NumberOfSites);
   in.EmptyVertexArray->Bind();
   for (int pass = 0; pass < 2; ++pass)
@@ -419,7 +423,7 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
       // Start from the first pass's seeds.
       in.SeedsFramebuffer[0]->Bind(GL_READ_FRAMEBUFFER);
       in.SeedsFramebuffer[0]->ActivateReadBuffer(0);
-      state->vtkglBlitFramebuffer(0, 0, gridSize[0], gridSize[1], 0, 0, gridSize[0], gridSize[1],
+      state->vtkglBlitFramebuffer(0, 0, this->GridSize[0], this->GridSize[1], 0, 0, this->GridSize[0], this->GridSize[1],
         GL_COLOR_BUFFER_BIT, GL_NEAREST);
       state->vtkglClearDepth(1.0);
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
@@ -456,8 +460,8 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
     in.Seeds[source]->Activate();
     jump->SetUniformi("seeds", in.Seeds[source]->GetTextureUnit());
     jump->SetUniformi("stepLength", step);
-    jump->SetUniform2i("gridSize", gridSize);
-    jump->SetUniform2f("metric", metric);
+    jump->SetUniform2i("gridSize", this->GridSize);
+    jump->SetUniform2f("metric", this->Metric);
     in.JumpFloodQuad->Render();
     in.Seeds[source]->Deactivate();
     source = target;
@@ -474,9 +478,6 @@ bool vtkCVTOpenGLEngine::Reduce()
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
-  const int gridSize[2] = { this->Grid.Width, this->Grid.Height };
-  const float metric[2] = { static_cast<float>(this->Grid.Spacing[0]),
-    static_cast<float>(this->Grid.Spacing[1]) };
   vtkTextureObject* seeds = in.Seeds[in.CurrentSeeds];
   // The other jump flooding texture is free now: it receives the collected sums.
   vtkTextureObject* collected = in.Seeds[1 - in.CurrentSeeds];
@@ -489,7 +490,7 @@ bool vtkCVTOpenGLEngine::Reduce()
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglViewport(0, 0, gridSize[0], gridSize[1]);
+  state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   state->PushFramebufferBindings();
 
   // Step 1: split pixels between candidate sites (fragment pass over the grid).
@@ -505,8 +506,8 @@ bool vtkCVTOpenGLEngine::Reduce()
   in.Density->Activate();
   split->SetUniformi("seeds", seeds->GetTextureUnit());
   split->SetUniformi("density", in.Density->GetTextureUnit());
-  split->SetUniform2i("gridSize", gridSize);
-  split->SetUniform2f("metric", metric);
+  split->SetUniform2i("gridSize", this->GridSize);
+  split->SetUniform2f("metric", this->Metric);
   split->SetUniformi("candidateLimit", this->SplitBoundaryPixels ? MaxCandidates : 1);
   in.SplitQuad->Render();
   in.Density->Deactivate();
@@ -529,7 +530,7 @@ bool vtkCVTOpenGLEngine::Reduce()
     in.Pieces[k]->Activate();
     collect->SetUniformi(pieceNames[k], in.Pieces[k]->GetTextureUnit());
   }
-  collect->SetUniform2i("gridSize", gridSize);
+  collect->SetUniform2i("gridSize", this->GridSize);
   in.CollectQuad->Render();
   for (int k = 0; k < MaxCandidates; ++k)
   {
@@ -556,11 +557,11 @@ bool vtkCVTOpenGLEngine::Reduce()
   collected->Activate();
   reduce->SetUniformi("seeds", seeds->GetTextureUnit());
   reduce->SetUniformi("collected", collected->GetTextureUnit());
-  reduce->SetUniform2i("gridSize", gridSize);
+  reduce->SetUniform2i("gridSize", this->GridSize);
   reduce->SetUniform2i("slotSize", this->SlotSize);
-  reduce->SetUniform2f("metric", metric);
-  reduce->SetUniformf(
-    "radiusScale", static_cast<float>(1.0 / std::min(this->Grid.Spacing[0], this->Grid.Spacing[1])));
+  reduce->SetUniform2f("metric", this->Metric);
+  reduce->SetUniformf("radiusScale",
+    static_cast<float>(1.0 / std::min(this->Grid.Spacing[0], this->Grid.Spacing[1])));
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   state->vtkglBlendEquation(GL_FUNC_ADD);
@@ -669,18 +670,14 @@ bool vtkCVTOpenGLEngine::MoveSitesToCentroids()
     state->PopFramebufferBindings();
     return this->Fail("the Lloyd update shader did not compile");
   }
-  const float metric[2] = { static_cast<float>(this->Grid.Spacing[0]),
-    static_cast<float>(this->Grid.Spacing[1]) };
-  const float gridSize[2] = { static_cast<float>(this->Grid.Width),
-    static_cast<float>(this->Grid.Height) };
   in.Sites[in.CurrentSites]->Activate();
   in.Sums->Activate();
   lloyd->SetUniformi("sites", in.Sites[in.CurrentSites]->GetTextureUnit());
   lloyd->SetUniformi("sums", in.Sums->GetTextureUnit());
   lloyd->SetUniform2i("slotSize", this->SlotSize);
   lloyd->SetUniformi("numberOfSites", this->NumberOfSites);
-  lloyd->SetUniform2f("metric", metric);
-  lloyd->SetUniform2f("gridSize", gridSize);
+  lloyd->SetUniform2f("metric", this->Metric);
+  lloyd->SetUniform2i("gridSize", this->GridSize);
   in.LloydQuad->Render();
   in.Sums->Deactivate();
   in.Sites[in.CurrentSites]->Deactivate();

@@ -24,9 +24,9 @@
 #ifndef vtkCVTOpenGLEngine_h
 #define vtkCVTOpenGLEngine_h
 
-#include "cvtEngine.h"           // for cvt::Engine
+#include "cvtEngine.h"          // for cvt::Engine
 #include "cvtRenderingModule.h" // for export macro
-#include "vtkNew.h"              // for ivars
+#include "vtkNew.h"             // for ivars
 #include "vtkObject.h"
 
 #include <memory> // for unique_ptr
@@ -114,6 +114,8 @@ private:
   bool CheckGLError(const char* where);
 
   cvt::Grid Grid;
+  int GridSize[2] = { 0, 0 };     // Grid.Width, Grid.Height, as shader uniforms want them
+  float Metric[2] = { 1.0f, 1.0f }; // Grid.Spacing in float
   int NumberOfSites = 0;
   int SlotSize[2] = { 0, 0 };
   int FullStep = 1;

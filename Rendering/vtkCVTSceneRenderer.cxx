@@ -50,10 +50,12 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
   // The domain reaches half a pixel beyond the first and last pixel centres.
   const double width = bounds[1] - bounds[0] + spacing[0];
   const double height = bounds[3] - bounds[2] + spacing[1];
-  const int sizeX = width >= height ? this->Size
-                                    : std::max(16, static_cast<int>(std::lround(this->Size * width / height)));
-  const int sizeY = width >= height ? std::max(16, static_cast<int>(std::lround(this->Size * height / width)))
-                                    : this->Size;
+  const int sizeX = width >= height
+    ? this->Size
+    : std::max(16, static_cast<int>(std::lround(this->Size * width / height)));
+  const int sizeY = width >= height
+    ? std::max(16, static_cast<int>(std::lround(this->Size * height / width)))
+    : this->Size;
   window->SetSize(sizeX, sizeY);
 
   // Pastel colours from a fixed seed: the same result always gives the same picture.

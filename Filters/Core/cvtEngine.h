@@ -28,6 +28,15 @@ struct Grid
   double XMax() const { return this->Origin[0] + this->Width * this->Spacing[0]; }
   double YMin() const { return this->Origin[1]; }
   double YMax() const { return this->Origin[1] + this->Height * this->Spacing[1]; }
+  /// An n x n grid over the square [lo, hi]^2.
+  static Grid Square(int n, double lo, double hi)
+  {
+    Grid grid;
+    grid.Width = grid.Height = n;
+    grid.Origin[0] = grid.Origin[1] = lo;
+    grid.Spacing[0] = grid.Spacing[1] = (hi - lo) / n;
+    return grid;
+  }
   bool Contains(double x, double y) const
   {
     return x >= this->XMin() && x <= this->XMax() && y >= this->YMin() && y <= this->YMax();

@@ -67,8 +67,8 @@ Polygon Rectangle(double x0, double x1, double y0, double y1)
 
 /// Clips `cell` (containing site i) by the bisectors of i and the other sites, visiting them
 /// nearest first and stopping once no farther site can cut the cell.
-Polygon ClipCell(Polygon cell, const std::vector<double>& sites, size_t i,
-  const std::vector<size_t>& byDistance)
+Polygon ClipCell(
+  Polygon cell, const std::vector<double>& sites, size_t i, const std::vector<size_t>& byDistance)
 {
   const double sx = sites[2 * i], sy = sites[2 * i + 1];
   for (size_t j : byDistance)
@@ -158,9 +158,15 @@ CellSums ExactCellSums(
       ymax = std::max(ymax, cell.Y[k]);
     }
     const auto column = [&grid](double x)
-    { return std::clamp(static_cast<int>(std::floor((x - grid.Origin[0]) / grid.Spacing[0])), 0, grid.Width - 1); };
+    {
+      return std::clamp(
+        static_cast<int>(std::floor((x - grid.Origin[0]) / grid.Spacing[0])), 0, grid.Width - 1);
+    };
     const auto row = [&grid](double y)
-    { return std::clamp(static_cast<int>(std::floor((y - grid.Origin[1]) / grid.Spacing[1])), 0, grid.Height - 1); };
+    {
+      return std::clamp(
+        static_cast<int>(std::floor((y - grid.Origin[1]) / grid.Spacing[1])), 0, grid.Height - 1);
+    };
     for (int py = row(ymin); py <= row(ymax); ++py)
     {
       const double y0 = grid.Origin[1] + py * grid.Spacing[1], y1 = y0 + grid.Spacing[1];

@@ -79,8 +79,7 @@ std::string CheckDensity(const Grid& grid, const std::vector<float>& density)
     if (v < 0.0f)
     {
       std::ostringstream msg;
-      msg << "the density is negative (" << v << ") at pixel " << p
-          << "; densities must be >= 0";
+      msg << "the density is negative (" << v << ") at pixel " << p << "; densities must be >= 0";
       return msg.str();
     }
     anyPositive = anyPositive || v > 0.0f;

@@ -6,7 +6,7 @@ uniform sampler2D sums;  // (mass, moment x, moment y, energy), physical units, 
 uniform ivec2 slotSize;
 uniform int numberOfSites;
 uniform vec2 metric;
-uniform vec2 gridSize;
+uniform ivec2 gridSize;
 in vec2 texCoord; // from vtkOpenGLQuadHelper: slot centre / slot texture size
 
 void main()
@@ -17,7 +17,7 @@ void main()
   vec4 cell = texelFetch(sums, p, 0);
   if (i < numberOfSites && cell.x > 0.0)
   {
-    site.xy = clamp(site.xy + cell.yz / cell.x / metric, vec2(0.0), gridSize);
+    site.xy = clamp(site.xy + cell.yz / cell.x / metric, vec2(0.0), vec2(gridSize));
   }
   gl_FragData[0] = site;
 }

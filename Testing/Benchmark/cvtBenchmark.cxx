@@ -22,15 +22,6 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 
-cvt::Grid SquareGrid(int n)
-{
-  cvt::Grid grid;
-  grid.Width = grid.Height = n;
-  grid.Origin[0] = grid.Origin[1] = -1.0;
-  grid.Spacing[0] = grid.Spacing[1] = 2.0 / n;
-  return grid;
-}
-
 double Median(std::vector<double> values)
 {
   if (values.empty())
@@ -43,7 +34,7 @@ double Median(std::vector<double> values)
 
 bool Timing(int resolution, int sites, int iterations, bool adaptive)
 {
-  const cvt::Grid grid = SquareGrid(resolution);
+  const cvt::Grid grid = cvt::Grid::Square(resolution, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   engine->SetMeasureTimings(true);
@@ -81,7 +72,7 @@ bool Timing(int resolution, int sites, int iterations, bool adaptive)
 bool Accuracy()
 {
   const int iterations = 216;
-  const cvt::Grid grid = SquareGrid(512);
+  const cvt::Grid grid = cvt::Grid::Square(512, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   const std::vector<double> initial = cvt::SampleSites(grid, {}, 1000, 2011);
 

@@ -5,18 +5,6 @@
 
 #include <cmath>
 
-namespace
-{
-cvt::Grid SquareGrid(int n, double lo, double hi)
-{
-  cvt::Grid grid;
-  grid.Width = grid.Height = n;
-  grid.Origin[0] = grid.Origin[1] = lo;
-  grid.Spacing[0] = grid.Spacing[1] = (hi - lo) / n;
-  return grid;
-}
-}
-
 TEST(ExactVoronoi, UnitSquareIntegrals)
 {
   cvt::Polygon square;
@@ -34,7 +22,7 @@ TEST(ExactVoronoi, UnitSquareIntegrals)
 
 TEST(ExactVoronoi, TwoSitesSplitTheSquareInHalves)
 {
-  const cvt::Grid grid = SquareGrid(4, -1.0, 1.0);
+  const cvt::Grid grid = cvt::Grid::Square(4, -1.0, 1.0);
   const std::vector<double> sites{ -0.5, 0.0, 0.5, 0.0 };
   const cvt::CellSums sums = cvt::ExactCellSums(grid, sites, {});
   EXPECT_NEAR(sums.Mass[0], 2.0, 1e-12);
@@ -46,7 +34,7 @@ TEST(ExactVoronoi, TwoSitesSplitTheSquareInHalves)
 
 TEST(ExactVoronoi, CellsTileTheDomain)
 {
-  const cvt::Grid grid = SquareGrid(64, -1.0, 1.0);
+  const cvt::Grid grid = cvt::Grid::Square(64, -1.0, 1.0);
   const auto sites = cvt::SampleSites(grid, {}, 300, 11);
   const cvt::CellSums sums = cvt::ExactCellSums(grid, sites, {});
   double total = 0.0;
@@ -59,11 +47,10 @@ TEST(ExactVoronoi, CellsTileTheDomain)
 
 TEST(ExactVoronoi, PixelwiseDensityMatchesUniformWhenConstant)
 {
-  const cvt::Grid grid = SquareGrid(16, 0.0, 1.0);
+  const cvt::Grid grid = cvt::Grid::Square(16, 0.0, 1.0);
   const auto sites = cvt::SampleSites(grid, {}, 20, 5);
   const cvt::CellSums uniform = cvt::ExactCellSums(grid, sites, {});
-  const cvt::CellSums pixelwise =
-    cvt::ExactCellSums(grid, sites, std::vector<float>(256, 2.0f));
+  const cvt::CellSums pixelwise = cvt::ExactCellSums(grid, sites, std::vector<float>(256, 2.0f));
   for (size_t i = 0; i < uniform.Size(); ++i)
   {
     EXPECT_NEAR(pixelwise.Mass[i], 2.0 * uniform.Mass[i], 1e-12);
@@ -74,7 +61,7 @@ TEST(ExactVoronoi, PixelwiseDensityMatchesUniformWhenConstant)
 
 TEST(ExactVoronoi, BruteForceLabelsPickTheNearestSite)
 {
-  const cvt::Grid grid = SquareGrid(4, 0.0, 4.0);
+  const cvt::Grid grid = cvt::Grid::Square(4, 0.0, 4.0);
   const auto labels = cvt::BruteForceLabels(grid, { 0.5, 0.5, 3.5, 3.5 });
   EXPECT_EQ(labels[0], 0);
   EXPECT_EQ(labels[15], 1);

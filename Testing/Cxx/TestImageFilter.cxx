@@ -30,8 +30,8 @@
 namespace
 {
 /// A W x H image over [x0, x0 + W*s] x [y0, y0 + H*s] (pixel centres half a spacing inside).
-vtkSmartPointer<vtkImageData> MakeImage(int width, int height, double x0 = -1.0, double y0 = -1.0,
-  double spacing = -1.0)
+vtkSmartPointer<vtkImageData> MakeImage(
+  int width, int height, double x0 = -1.0, double y0 = -1.0, double spacing = -1.0)
 {
   if (spacing <= 0.0)
   {
@@ -113,8 +113,8 @@ TEST(ImageFilter, ProducesAllOutputs)
   int progressEvents = 0;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&progressEvents);
-  onProgress->SetCallback([](vtkObject*, unsigned long, void* clientData, void*)
-    { ++*static_cast<int*>(clientData); });
+  onProgress->SetCallback(
+    [](vtkObject*, unsigned long, void* clientData, void*) { ++*static_cast<int*>(clientData); });
   filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
   filter->Update();
 
@@ -276,7 +276,8 @@ TEST(ImageFilter, AbortStopsIterations)
   filter->SetMaximumNumberOfIterations(1000);
   filter->SetTolerance(0.0);
   vtkNew<vtkCallbackCommand> abortSoon;
-  abortSoon->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
+  abortSoon->SetCallback(
+    [](vtkObject* caller, unsigned long, void*, void*)
     {
       auto* f = static_cast<vtkCVTImageFilter*>(caller);
       if (f->GetProgress() > 0.002)

@@ -11,19 +11,11 @@
 
 namespace
 {
-cvt::Grid SquareGrid(int n)
-{
-  cvt::Grid grid;
-  grid.Width = grid.Height = n;
-  grid.Origin[0] = grid.Origin[1] = -1.0;
-  grid.Spacing[0] = grid.Spacing[1] = 2.0 / n;
-  return grid;
-}
 
 /// Pixels whose GPU site is farther from the pixel centre than the true nearest site
 /// (a tie is not a mislabel).
-int CountMislabels(const cvt::Grid& grid, const std::vector<double>& sites,
-  const std::vector<int>& labels)
+int CountMislabels(
+  const cvt::Grid& grid, const std::vector<double>& sites, const std::vector<int>& labels)
 {
   const std::vector<int> truth = cvt::BruteForceLabels(grid, sites);
   int wrong = 0;
@@ -57,7 +49,7 @@ int CountMislabels(const cvt::Grid& grid, const std::vector<double>& sites,
 
 TEST(JumpFlooding, FullStepMislabelRateMatchesThePaper)
 {
-  const cvt::Grid grid = SquareGrid(512);
+  const cvt::Grid grid = cvt::Grid::Square(512, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   engine->AdaptiveStepOff();
@@ -86,7 +78,7 @@ TEST(JumpFlooding, FullStepMislabelRateMatchesThePaper)
 
 TEST(JumpFlooding, AdaptiveStepLabelsLikeTheFullStep)
 {
-  const cvt::Grid grid = SquareGrid(256);
+  const cvt::Grid grid = cvt::Grid::Square(256, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   ASSERT_TRUE(engine->SetDomain(grid, density)) << engine->GetLastError();
@@ -117,7 +109,7 @@ TEST(JumpFlooding, SafeguardFallsBackWhenSitesJump)
   // Spread sites shrink the step; then the same number of sites crowd into a corner but one,
   // leaving cells far larger than the reduced step can reach: the safeguard must redo the
   // labelling with the full step, and the labels must be right.
-  const cvt::Grid grid = SquareGrid(256);
+  const cvt::Grid grid = cvt::Grid::Square(256, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   ASSERT_TRUE(engine->SetDomain(grid, density));

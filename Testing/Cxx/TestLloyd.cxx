@@ -8,21 +8,9 @@
 
 #include <gtest/gtest.h>
 
-namespace
-{
-cvt::Grid SquareGrid(int n)
-{
-  cvt::Grid grid;
-  grid.Width = grid.Height = n;
-  grid.Origin[0] = grid.Origin[1] = -1.0;
-  grid.Spacing[0] = grid.Spacing[1] = 2.0 / n;
-  return grid;
-}
-}
-
 TEST(Lloyd, EnergyDecreasesEveryIteration)
 {
-  const cvt::Grid grid = SquareGrid(128);
+  const cvt::Grid grid = cvt::Grid::Square(128, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   ASSERT_TRUE(engine->SetDomain(grid, density));
@@ -41,13 +29,13 @@ TEST(Lloyd, EnergyDecreasesEveryIteration)
   EXPECT_LT(result.History.back().Energy, 0.8 * result.History.front().Energy);
   EXPECT_LT(result.History.back().GradientNorm, 0.2 * result.History.front().GradientNorm);
   // The reported energy is that of the returned sites.
-  EXPECT_NEAR(result.Sums.TotalEnergy(),
-    cvt::ExactCellSums(grid, result.Sites, {}).TotalEnergy(), 1e-3 * result.Sums.TotalEnergy());
+  EXPECT_NEAR(result.Sums.TotalEnergy(), cvt::ExactCellSums(grid, result.Sites, {}).TotalEnergy(),
+    1e-3 * result.Sums.TotalEnergy());
 }
 
 TEST(Lloyd, GpuUpdateMovesSitesToCentroids)
 {
-  const cvt::Grid grid = SquareGrid(64);
+  const cvt::Grid grid = cvt::Grid::Square(64, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   const auto sites = cvt::SampleSites(grid, {}, 20, 6);
   vtkNew<vtkCVTOpenGLEngine> engine;
@@ -68,7 +56,7 @@ TEST(Lloyd, GpuUpdateMovesSitesToCentroids)
 
 TEST(Lloyd, ToleranceStopsEarly)
 {
-  const cvt::Grid grid = SquareGrid(64);
+  const cvt::Grid grid = cvt::Grid::Square(64, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   ASSERT_TRUE(engine->SetDomain(grid, density));
@@ -85,7 +73,7 @@ TEST(Lloyd, ToleranceStopsEarly)
 
 TEST(Lloyd, ProgressCallbackCanAbort)
 {
-  const cvt::Grid grid = SquareGrid(32);
+  const cvt::Grid grid = cvt::Grid::Square(32, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   ASSERT_TRUE(engine->SetDomain(grid, density));

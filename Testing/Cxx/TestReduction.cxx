@@ -59,8 +59,8 @@ TEST(Reduction, SplitPixelsGiveExactCellIntegralsUniformDensity)
   ASSERT_TRUE(engine->ComputeCellSums(gpu)) << engine->GetLastError();
   const cvt::CellSums exact = cvt::ExactCellSums(grid, sites, {});
   ExpectClose(gpu, exact, 2e-3);
-  std::cout << "[ measured ] GPU energy " << gpu.TotalEnergy() << ", exact "
-            << exact.TotalEnergy() << " (relative difference "
+  std::cout << "[ measured ] GPU energy " << gpu.TotalEnergy() << ", exact " << exact.TotalEnergy()
+            << " (relative difference "
             << (gpu.TotalEnergy() - exact.TotalEnergy()) / exact.TotalEnergy() << ")\n";
 }
 
@@ -119,7 +119,8 @@ TEST(Reduction, WholePixelsMatchCpuSumsOverBruteForceLabels)
       cpu.MomentX[s] += rho * area * dx;
       cpu.MomentY[s] += rho * area * dy;
       cpu.Energy[s] += rho * area *
-        (dx * dx + dy * dy + (grid.Spacing[0] * grid.Spacing[0] + grid.Spacing[1] * grid.Spacing[1]) / 12.0);
+        (dx * dx + dy * dy +
+          (grid.Spacing[0] * grid.Spacing[0] + grid.Spacing[1] * grid.Spacing[1]) / 12.0);
     }
   }
   ExpectClose(gpu, cpu, 1e-4);

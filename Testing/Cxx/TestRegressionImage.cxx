@@ -34,7 +34,8 @@ TEST(RegressionImage, RenderedCVTMatchesTheBaseline)
 
   vtkNew<vtkCVTSceneRenderer> scene;
   scene->SetSize(256);
-  vtkSmartPointer<vtkImageData> picture = scene->Render(cvt->GetLabelsOutput(), cvt->GetSitesOutput());
+  vtkSmartPointer<vtkImageData> picture =
+    scene->Render(cvt->GetLabelsOutput(), cvt->GetSitesOutput());
   ASSERT_NE(picture, nullptr) << scene->GetLastError();
   int dims[3];
   picture->GetDimensions(dims);
@@ -61,6 +62,7 @@ TEST(RegressionImage, RenderedCVTMatchesTheBaseline)
   difference->Update();
   // vtkImageDifference's thresholded error: 0 for identical pictures; a few moved boundary
   // pixels (another GPU's rounding) stay far below this.
-  std::cout << "[ measured ] thresholded image error: " << difference->GetThresholdedError() << "\n";
+  std::cout << "[ measured ] thresholded image error: " << difference->GetThresholdedError()
+            << "\n";
   EXPECT_LT(difference->GetThresholdedError(), 10.0);
 }

@@ -5,21 +5,9 @@
 #include <cmath>
 #include <limits>
 
-namespace
-{
-cvt::Grid UnitGrid(int n)
-{
-  cvt::Grid grid;
-  grid.Width = grid.Height = n;
-  grid.Origin[0] = grid.Origin[1] = -1.0;
-  grid.Spacing[0] = grid.Spacing[1] = 2.0 / n;
-  return grid;
-}
-}
-
 TEST(Sampling, SameSeedSameSitesOtherSeedOtherSites)
 {
-  const cvt::Grid grid = UnitGrid(32);
+  const cvt::Grid grid = cvt::Grid::Square(32, -1.0, 1.0);
   const auto a = cvt::SampleSites(grid, {}, 50, 7);
   const auto b = cvt::SampleSites(grid, {}, 50, 7);
   const auto c = cvt::SampleSites(grid, {}, 50, 8);
@@ -32,7 +20,7 @@ TEST(Sampling, SameSeedSameSitesOtherSeedOtherSites)
 TEST(Sampling, FollowsTheDensity)
 {
   // Density only in the left half: every site must land there.
-  const cvt::Grid grid = UnitGrid(16);
+  const cvt::Grid grid = cvt::Grid::Square(16, -1.0, 1.0);
   std::vector<float> density(256, 0.0f);
   for (int j = 0; j < 16; ++j)
   {
@@ -50,7 +38,7 @@ TEST(Sampling, FollowsTheDensity)
 
 TEST(Sampling, DensityChecksSayWhatIsWrong)
 {
-  const cvt::Grid grid = UnitGrid(2);
+  const cvt::Grid grid = cvt::Grid::Square(2, -1.0, 1.0);
   EXPECT_EQ(cvt::CheckDensity(grid, { 1, 2, 3, 0 }), "");
   EXPECT_NE(cvt::CheckDensity(grid, { 1, -2, 3, 0 }).find("negative"), std::string::npos);
   EXPECT_NE(cvt::CheckDensity(grid, { 1, std::numeric_limits<float>::quiet_NaN(), 3, 0 })
@@ -62,7 +50,7 @@ TEST(Sampling, DensityChecksSayWhatIsWrong)
 
 TEST(Sampling, SiteChecksSayWhatIsWrong)
 {
-  const cvt::Grid grid = UnitGrid(2);
+  const cvt::Grid grid = cvt::Grid::Square(2, -1.0, 1.0);
   EXPECT_EQ(cvt::CheckSites(grid, { 0.0, 0.0, 0.5, 0.5 }), "");
   EXPECT_NE(cvt::CheckSites(grid, {}).find("no sites"), std::string::npos);
   EXPECT_NE(cvt::CheckSites(grid, { 0.0, 0.0, 2.0, 0.0 }).find("outside"), std::string::npos);
