@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 namespace cvt
 {
@@ -65,61 +64,113 @@ Polygon Rectangle(double x0, double x1, double y0, double y1)
   return p;
 }
 
-/// Clips `cell` (containing site i) by the bisectors of i and the other sites, visiting them
-/// nearest first and stopping once no farther site can cut the cell.
-Polygon ClipCell(
-  Polygon cell, const std::vector<double>& sites, size_t i, const std::vector<size_t>& byDistance)
+double SquaredRadius(const Polygon& cell, double sx, double sy)
 {
-  const double sx = sites[2 * i], sy = sites[2 * i + 1];
-  for (size_t j : byDistance)
+  double radius2 = 0.0;
+  for (size_t k = 0; k < cell.Size(); ++k)
   {
-    if (j == i)
+    const double vx = cell.X[k] - sx, vy = cell.Y[k] - sy;
+    radius2 = std::max(radius2, vx * vx + vy * vy);
+  }
+  return radius2;
+}
+
+/// Sites binned on a uniform grid of buckets over the domain, about two per bucket, so that
+/// a cell is clipped only by the sites of the bucket rings that can reach it.
+class Buckets
+{
+public:
+  Buckets(const Grid& grid, const std::vector<double>& sites)
+    : Grid_(grid)
+  {
+    const size_t n = sites.size() / 2;
+    this->Count = std::max(1, static_cast<int>(std::ceil(std::sqrt(n / 2.0))));
+    this->Width = (grid.XMax() - grid.XMin()) / this->Count;
+    this->Height = (grid.YMax() - grid.YMin()) / this->Count;
+    this->Bins.resize(static_cast<size_t>(this->Count) * this->Count);
+    for (size_t i = 0; i < n; ++i)
     {
-      continue;
-    }
-    const double dx = sites[2 * j] - sx, dy = sites[2 * j + 1] - sy;
-    const double d2 = dx * dx + dy * dy;
-    double radius2 = 0.0;
-    for (size_t k = 0; k < cell.Size(); ++k)
-    {
-      const double vx = cell.X[k] - sx, vy = cell.Y[k] - sy;
-      radius2 = std::max(radius2, vx * vx + vy * vy);
-    }
-    if (d2 > 4.0 * radius2)
-    {
-      break; // the bisector of j lies beyond the cell, and so do all farther ones
-    }
-    // Keep x with (x - s_i) . d <= |d|^2 / 2.
-    cell = ClipPolygon(cell, dx, dy, dx * sx + dy * sy + 0.5 * d2);
-    if (cell.Size() == 0)
-    {
-      break;
+      this->Bins[this->Index(this->Column(sites[2 * i]), this->Row(sites[2 * i + 1]))].push_back(i);
     }
   }
-  return cell;
-}
+  int Column(double x) const
+  {
+    return std::clamp(static_cast<int>((x - this->Grid_.XMin()) / this->Width), 0, this->Count - 1);
+  }
+  int Row(double y) const
+  {
+    return std::clamp(
+      static_cast<int>((y - this->Grid_.YMin()) / this->Height), 0, this->Count - 1);
+  }
+  size_t Index(int column, int row) const
+  {
+    return static_cast<size_t>(row) * this->Count + column;
+  }
+
+  /// Sites in the buckets at Chebyshev distance `ring` from (column, row).
+  void Ring(int column, int row, int ring, std::vector<size_t>& out) const
+  {
+    out.clear();
+    for (int r = row - ring; r <= row + ring; ++r)
+    {
+      for (int c = column - ring; c <= column + ring; ++c)
+      {
+        const bool onRing = std::abs(r - row) == ring || std::abs(c - column) == ring;
+        if (onRing && r >= 0 && c >= 0 && r < this->Count && c < this->Count)
+        {
+          const auto& bin = this->Bins[this->Index(c, r)];
+          out.insert(out.end(), bin.begin(), bin.end());
+        }
+      }
+    }
+  }
+
+  const Grid& Grid_;
+  int Count = 1;
+  double Width = 1.0, Height = 1.0;
+  std::vector<std::vector<size_t>> Bins;
+};
 }
 
 std::vector<Polygon> ClippedVoronoiCells(const Grid& grid, const std::vector<double>& sites)
 {
   const size_t n = sites.size() / 2;
   const Polygon domain = Rectangle(grid.XMin(), grid.XMax(), grid.YMin(), grid.YMax());
+  const Buckets buckets(grid, sites);
+  const double bucketSide = std::min(buckets.Width, buckets.Height);
   std::vector<Polygon> cells(n);
-  // For each site, visit the others by increasing distance (a full sort: O(n^2 log n), fine for
-  // the few thousand sites of tests and reports).
-  std::vector<size_t> order(n);
-  std::vector<double> distance(n);
+  std::vector<size_t> ring;
   for (size_t i = 0; i < n; ++i)
   {
-    for (size_t j = 0; j < n; ++j)
+    const double sx = sites[2 * i], sy = sites[2 * i + 1];
+    const int column = buckets.Column(sx), row = buckets.Row(sy);
+    Polygon cell = domain;
+    for (int r = 0; r < buckets.Count && cell.Size() > 0; ++r)
     {
-      const double dx = sites[2 * j] - sites[2 * i], dy = sites[2 * j + 1] - sites[2 * i + 1];
-      distance[j] = dx * dx + dy * dy;
+      // Sites in ring r are at least (r - 1) bucket sides away; their bisectors miss the cell
+      // once that is more than twice the cell's radius.
+      const double nearest = std::max(0, r - 1) * bucketSide;
+      if (nearest * nearest > 4.0 * SquaredRadius(cell, sx, sy))
+      {
+        break;
+      }
+      buckets.Ring(column, row, r, ring);
+      for (size_t j : ring)
+      {
+        if (j == i)
+        {
+          continue;
+        }
+        const double dx = sites[2 * j] - sx, dy = sites[2 * j + 1] - sy;
+        // Keep x with (x - s_i) . d <= |d|^2 / 2.
+        cell = ClipPolygon(cell, dx, dy, dx * sx + dy * sy + 0.5 * (dx * dx + dy * dy));
+        if (cell.Size() == 0)
+        {
+          break;
+        }
+      }
     }
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-      [&distance](size_t a, size_t b) { return distance[a] < distance[b]; });
-    cells[i] = ClipCell(domain, sites, i, order);
+    cells[i] = std::move(cell);
   }
   return cells;
 }

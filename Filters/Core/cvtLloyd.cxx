@@ -46,6 +46,11 @@ bool RunLloyd(Engine& engine, const OptimizerOptions& options, const ProgressCal
       result.StopReason = "iteration limit";
       break;
     }
+    if (entry.GradientNorm <= options.GradientTolerance * result.History.front().GradientNorm)
+    {
+      result.StopReason = "gradient tolerance reached";
+      break;
+    }
     if (checkLabels && iteration > 0)
     {
       const double before = result.History[iteration - 1].Energy;

@@ -25,9 +25,13 @@ struct HistoryEntry
 struct OptimizerOptions
 {
   int MaximumNumberOfIterations = 100;
-  /// Stop when no pixel changes site, or when the relative energy decrease of an iteration
-  /// falls below this. 0 runs every iteration.
+  /// Stop when the relative energy decrease of an iteration falls below this (and, for
+  /// Lloyd, when no pixel changes site). 0 runs every iteration.
   double Tolerance = 0.0;
+  /// Stop when |grad F| falls below this fraction of its initial value (0: never).
+  double GradientTolerance = 0.0;
+  /// L-BFGS: number of corrections kept for the inverse Hessian (Liu et al. use 7).
+  int NumberOfCorrections = 7;
 };
 
 struct OptimizerResult

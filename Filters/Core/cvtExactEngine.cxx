@@ -1,0 +1,81 @@
+#include "cvtExactEngine.h"
+
+#include "cvtExactVoronoi.h"
+
+#include <algorithm>
+
+namespace cvt
+{
+
+bool ExactEngine::SetDomain(const Grid& grid, const std::vector<float>& density)
+{
+  if (grid.Width <= 0 || grid.Height <= 0)
+  {
+    return this->Fail("the domain has no pixels");
+  }
+  if (static_cast<long long>(density.size()) != grid.NumberOfPixels())
+  {
+    return this->Fail("the density must hold one value per pixel");
+  }
+  this->Domain = grid;
+  const bool uniform =
+    std::all_of(density.begin(), density.end(), [](float v) { return v == 1.0f; });
+  this->Density = uniform ? std::vector<float>() : density;
+  this->HaveSums = false;
+  return true;
+}
+
+bool ExactEngine::SetSites(const std::vector<double>& sites)
+{
+  if (sites.size() < 2)
+  {
+    return this->Fail("there are no sites");
+  }
+  this->Sites = sites;
+  this->HaveSums = false;
+  return true;
+}
+
+bool ExactEngine::ComputeCellSums(CellSums& sums)
+{
+  if (this->Sites.empty())
+  {
+    return this->Fail("SetSites must succeed before ComputeCellSums");
+  }
+  this->LastSums = ExactCellSums(this->Domain, this->Sites, this->Density);
+  this->HaveSums = true;
+  sums = this->LastSums;
+  return true;
+}
+
+bool ExactEngine::MoveSitesToCentroids()
+{
+  if (!this->HaveSums)
+  {
+    return this->Fail("ComputeCellSums must run before MoveSitesToCentroids");
+  }
+  for (size_t i = 0; i < this->LastSums.Size(); ++i)
+  {
+    if (this->LastSums.Mass[i] > 0.0)
+    {
+      this->Sites[2 * i] += this->LastSums.MomentX[i] / this->LastSums.Mass[i];
+      this->Sites[2 * i + 1] += this->LastSums.MomentY[i] / this->LastSums.Mass[i];
+    }
+  }
+  this->HaveSums = false;
+  return true;
+}
+
+bool ExactEngine::GetSites(std::vector<double>& sites)
+{
+  sites = this->Sites;
+  return true;
+}
+
+bool ExactEngine::GetLabels(std::vector<int>& labels)
+{
+  labels = BruteForceLabels(this->Domain, this->Sites);
+  return true;
+}
+
+} // namespace cvt

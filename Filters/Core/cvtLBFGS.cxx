@@ -1,0 +1,253 @@
+#include "cvtLBFGS.h"
+
+#include <Eigen/Core>
+#include <LBFGSB.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace cvt
+{
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+using Vector = Eigen::VectorXd;
+
+/// Thrown from inside the solver to end it: a stop condition, or an engine failure.
+struct StopOptimizer
+{
+  std::string Reason;
+  bool EngineFailed;
+};
+
+/// The CVT energy seen by the solver, in coordinates scaled to the unit box so that the
+/// solver's unit first step means the same for any physical extent of the domain.
+class Objective
+{
+public:
+  Objective(Engine& engine, const Grid& grid, const OptimizerOptions& options,
+    const ProgressCallback& progress, OptimizerResult& result)
+    : Engine_(engine)
+    , Options(options)
+    , Progress(progress)
+    , Result(result)
+    , Start(Clock::now())
+  {
+    this->Scale = std::max(grid.XMax() - grid.XMin(), grid.YMax() - grid.YMin());
+    this->Origin[0] = grid.XMin();
+    this->Origin[1] = grid.YMin();
+  }
+
+  Vector ToSolver(const std::vector<double>& sites) const
+  {
+    Vector x(sites.size());
+    for (size_t k = 0; k < sites.size(); ++k)
+    {
+      x[k] = (sites[k] - this->Origin[k % 2]) / this->Scale;
+    }
+    return x;
+  }
+  /// The domain grown by `margin` on every side, in solver coordinates.
+  void Bounds(
+    const Grid& grid, double margin, Eigen::Index size, Vector& lower, Vector& upper) const
+  {
+    lower.resize(size);
+    upper.resize(size);
+    for (Eigen::Index k = 0; k < size; k += 2)
+    {
+      lower[k] = (grid.XMin() - margin - this->Origin[0]) / this->Scale;
+      upper[k] = (grid.XMax() + margin - this->Origin[0]) / this->Scale;
+      lower[k + 1] = (grid.YMin() - margin - this->Origin[1]) / this->Scale;
+      upper[k + 1] = (grid.YMax() + margin - this->Origin[1]) / this->Scale;
+    }
+  }
+  std::vector<double> FromSolver(const Vector& x) const
+  {
+    std::vector<double> sites(x.size());
+    for (Eigen::Index k = 0; k < x.size(); ++k)
+    {
+      sites[k] = this->Origin[k % 2] + x[k] * this->Scale;
+    }
+    return sites;
+  }
+
+  /// Energy and gradient at x: one labelling and one reduction on the engine.
+  double operator()(const Vector& x, Vector& gradient)
+  {
+    this->LastSites = this->FromSolver(x);
+    CellSums sums;
+    if (!this->Engine_.SetSites(this->LastSites) || !this->Engine_.ComputeCellSums(sums))
+    {
+      throw StopOptimizer{ this->Engine_.GetLastError(), true };
+    }
+    ++this->Result.Evaluations;
+    gradient.resize(x.size());
+    for (size_t i = 0; i < sums.Size(); ++i)
+    {
+      gradient[2 * i] = -2.0 * sums.MomentX[i] * this->Scale;
+      gradient[2 * i + 1] = -2.0 * sums.MomentY[i] * this->Scale;
+    }
+    const double energy = sums.TotalEnergy();
+    if (energy < this->BestEnergy)
+    {
+      this->BestEnergy = energy;
+      this->Result.Sites = this->LastSites;
+      this->Result.Sums = sums;
+    }
+    if (this->Result.History.empty())
+    {
+      this->Record(0, energy, sums.GradientNorm());
+    }
+    return energy;
+  }
+
+  /// Called after every line search, at the accepted iterate.
+  void AcceptIterate(double energy, const Vector& gradient)
+  {
+    const int iteration = ++this->Result.Iterations;
+    const double gradientNorm = gradient.norm() / this->Scale;
+    const double before = this->Result.History.back().Energy;
+    this->Record(iteration, energy, gradientNorm);
+    if (this->Progress &&
+      !this->Progress(
+        static_cast<double>(iteration) / std::max(1, this->Options.MaximumNumberOfIterations)))
+    {
+      this->Result.Aborted = true;
+      throw StopOptimizer{ "aborted", false };
+    }
+    if (iteration >= this->Options.MaximumNumberOfIterations)
+    {
+      throw StopOptimizer{ "iteration limit", false };
+    }
+    if (gradientNorm <= this->Options.GradientTolerance * this->Result.History.front().GradientNorm)
+    {
+      throw StopOptimizer{ "gradient tolerance reached", false };
+    }
+    const double decrease = (before - energy) / std::max(std::abs(before), 1e-300);
+    if (this->Options.Tolerance > 0.0 && decrease < this->Options.Tolerance)
+    {
+      throw StopOptimizer{ "relative energy decrease below tolerance", false };
+    }
+  }
+
+  const std::vector<double>& GetLastSites() const { return this->LastSites; }
+
+private:
+  void Record(int iteration, double energy, double gradientNorm)
+  {
+    HistoryEntry entry;
+    entry.Iteration = iteration;
+    entry.Evaluations = this->Result.Evaluations;
+    entry.Energy = energy;
+    entry.GradientNorm = gradientNorm;
+    entry.Seconds = std::chrono::duration<double>(Clock::now() - this->Start).count();
+    this->Result.History.push_back(entry);
+  }
+
+  Engine& Engine_;
+  const OptimizerOptions& Options;
+  const ProgressCallback& Progress;
+  OptimizerResult& Result;
+  Clock::time_point Start;
+  double Scale = 1.0;
+  double Origin[2] = { 0.0, 0.0 };
+  double BestEnergy = std::numeric_limits<double>::infinity();
+  std::vector<double> LastSites;
+};
+
+/// LBFGS++'s More-Thuente line search, reporting every accepted iterate to the objective.
+template<typename Scalar>
+class ReportingLineSearch
+{
+public:
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  template<typename Function>
+  static void LineSearch(Function& f, Scalar& fx, Vector& x, Vector& grad, Scalar& step,
+    const Scalar& stepMax, const Vector& direction, const Vector& previous,
+    const LBFGSpp::LBFGSBParam<Scalar>& param)
+  {
+    LBFGSpp::LineSearchMoreThuente<Scalar>::LineSearch(
+      f, fx, x, grad, step, stepMax, direction, previous, param);
+    f.AcceptIterate(fx, grad);
+  }
+};
+}
+
+bool RunLBFGS(Engine& engine, const Grid& grid, const std::vector<double>& sites,
+  const OptimizerOptions& options, const ProgressCallback& progress, OptimizerResult& result,
+  std::string& error)
+{
+  result = OptimizerResult();
+  Objective objective(engine, grid, options, progress, result);
+  LBFGSpp::LBFGSBParam<double> parameters;
+  parameters.m = std::max(1, options.NumberOfCorrections);
+  parameters.epsilon = 0.0; // the objective applies every stop condition itself
+  parameters.epsilon_rel = 0.0;
+  parameters.max_iterations = 0;
+  parameters.max_linesearch = 20;
+  LBFGSpp::LBFGSBSolver<double, ReportingLineSearch> solver(parameters);
+  Vector x = objective.ToSolver(sites);
+  // Bounds: the domain grown by 1% on every side. With bounds exactly at the domain's edge,
+  // LBFGS++ 0.1's bounded line search stalls as soon as a site touches one. The energy is
+  // smooth for sites just outside (their cells still cover the border), and the result is
+  // projected back into the domain at the end.
+  const double margin = 0.01 * std::max(grid.XMax() - grid.XMin(), grid.YMax() - grid.YMin());
+  Vector lower, upper;
+  objective.Bounds(grid, margin, x.size(), lower, upper);
+  double energy = 0.0;
+  try
+  {
+    solver.minimize(objective, x, energy, lower, upper);
+    result.StopReason = "converged";
+  }
+  catch (const StopOptimizer& stop)
+  {
+    if (stop.EngineFailed)
+    {
+      error = stop.Reason;
+      return false;
+    }
+    result.StopReason = stop.Reason;
+  }
+  catch (const std::exception& failure)
+  {
+    // The line search found no point of sufficient decrease: energy and gradient are as
+    // accurate as float sums allow, so this is where the method ends.
+    result.StopReason = std::string("no sufficient decrease possible (") + failure.what() + ")";
+  }
+  if (result.Sites.empty())
+  {
+    error = "the L-BFGS method evaluated no sites";
+    return false;
+  }
+  bool moved = false;
+  for (size_t k = 0; k < result.Sites.size(); ++k)
+  {
+    const double low = k % 2 == 0 ? grid.XMin() : grid.YMin();
+    const double high = k % 2 == 0 ? grid.XMax() : grid.YMax();
+    const double inside = std::clamp(result.Sites[k], low, high);
+    moved = moved || inside != result.Sites[k];
+    result.Sites[k] = inside;
+  }
+  // Leave the engine labelled for the returned sites, and the sums theirs.
+  if (moved || objective.GetLastSites() != result.Sites)
+  {
+    CellSums sums;
+    if (!engine.SetSites(result.Sites) || !engine.ComputeCellSums(sums))
+    {
+      error = engine.GetLastError();
+      return false;
+    }
+    if (moved)
+    {
+      result.Sums = sums;
+    }
+  }
+  return true;
+}
+
+} // namespace cvt
