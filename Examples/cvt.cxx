@@ -58,10 +58,14 @@ Sites:
   --initial-sites FILE    CSV of initial sites, one "x,y" per line (overrides --sites)
   --seed S                seed of the initial site sampling (default 1)
 Optimiser:
-  --method lloyd|lbfgs    optimiser (default lloyd; lbfgs is not available yet)
+  --method lloyd|lbfgs    optimiser (default lbfgs)
   --iterations N          iteration cap (default 100)
-  --tolerance T           stop when no pixel changes site or the relative energy decrease
-                          falls below T; 0 runs every iteration (default 1e-6)
+  --tolerance T           stop when the relative energy decrease falls below T (Lloyd: or
+                          when no pixel changes site); 0 runs every iteration (default 1e-6)
+  --gradient-tolerance G  stop when |grad F| falls below G times its initial value (default 0)
+  --corrections M         L-BFGS corrections kept (default 7)
+  --report                print energy, |grad F|, the GPU energy against the exact CPU energy
+                          of the result, and quality measures (Rong et al. Table 6)
 Output:
   --output DIR            writes sites.vtp, sites.csv, labels.vti, dual.vtp, history.csv and
                           cvt.png there (default: ./cvt-output)
@@ -72,8 +76,10 @@ Output:
 struct Options
 {
   std::string Command;
-  std::string Input, Array, InitialSites, Output = "cvt-output", Method = "lloyd";
-  bool Invert = false, HaveDomain = false, Quiet = false;
+  std::string Input, Array, InitialSites, Output = "cvt-output", Method = "lbfgs";
+  bool Invert = false, HaveDomain = false, Quiet = false, Report = false;
+  int Corrections = 7;
+  double GradientTolerance = 0.0;
   double Domain[4] = { -1.0, 1.0, -1.0, 1.0 };
   int Resolution = 512, Sites = 1000, Iterations = 100;
   long long Seed = 1;
@@ -152,6 +158,12 @@ Options ParseArguments(int argc, char* argv[])
       options.Invert = true;
     else if (a == "--quiet")
       options.Quiet = true;
+    else if (a == "--report")
+      options.Report = true;
+    else if (a == "--corrections")
+      options.Corrections = static_cast<int>(ParseInteger(a, value()));
+    else if (a == "--gradient-tolerance")
+      options.GradientTolerance = ParseNumber(a, value());
     else if (a == "--domain")
     {
       if (k + 4 > args.size() - 1)
@@ -187,11 +199,7 @@ Options ParseArguments(int argc, char* argv[])
     else
       Fail("unknown option '" + a + "' (see cvt --help)", 2);
   }
-  if (options.Method == "lbfgs")
-  {
-    Fail("--method lbfgs is not available yet; use --method lloyd", 2);
-  }
-  if (options.Method != "lloyd")
+  if (options.Method != "lloyd" && options.Method != "lbfgs")
   {
     Fail("--method must be lloyd or lbfgs, got '" + options.Method + "'", 2);
   }
@@ -206,6 +214,14 @@ Options ParseArguments(int argc, char* argv[])
   if (!(options.Tolerance >= 0.0))
   {
     Fail("--tolerance must be >= 0", 2);
+  }
+  if (options.Corrections < 1 || options.Corrections > 100)
+  {
+    Fail("--corrections must be between 1 and 100", 2);
+  }
+  if (!(options.GradientTolerance >= 0.0 && options.GradientTolerance <= 1.0))
+  {
+    Fail("--gradient-tolerance must be between 0 and 1", 2);
   }
   if (options.Sites < 0)
   {
@@ -405,6 +421,17 @@ int main(int argc, char* argv[])
   cvt->SetRandomSeed(static_cast<int>(options.Seed));
   cvt->SetMaximumNumberOfIterations(options.Iterations);
   cvt->SetTolerance(options.Tolerance);
+  cvt->SetGradientTolerance(options.GradientTolerance);
+  cvt->SetNumberOfCorrections(options.Corrections);
+  if (options.Method == "lloyd")
+  {
+    cvt->SetMethodToLloyd();
+  }
+  else
+  {
+    cvt->SetMethodToLBFGS();
+  }
+  cvt->SetComputeExactEnergy(options.Report);
 
   // Filter errors go to stderr through VTK's output window; keep them and fail cleanly.
   struct ErrorObserver : vtkCommand
@@ -470,14 +497,32 @@ int main(int argc, char* argv[])
   png->SetFileName((dir + "cvt.png").c_str());
   png->Write();
 
+  vtkFieldData* fields = sites->GetFieldData();
+  const auto field = [fields](const char* name) { return fields->GetArray(name)->GetTuple1(0); };
+  if (options.Report)
+  {
+    std::cout << std::setprecision(6) << "report:\n"
+              << "  method                      " << options.Method << "\n"
+              << "  iterations / evaluations    " << field("Iterations") << " / "
+              << field("Evaluations") << "\n"
+              << "  energy F (GPU)              " << field("Energy") << "\n"
+              << "  energy F (exact, CPU)       " << field("ExactEnergy") << "\n"
+              << "  relative difference         " << 100.0 * field("EnergyRelativeDifference")
+              << " %\n"
+              << "  |grad F|                    " << field("GradientNorm") << "\n"
+              << "  hexagonal interior cells    " << 100.0 * field("HexagonalFraction") << " %\n"
+              << "  stdev cell radius r_i       " << field("RadiusStandardDeviation") << "\n"
+              << "  stdev nearest neighbour d_i " << field("NearestNeighborStandardDeviation")
+              << "\n"
+              << "  stdev cell area a_i         " << field("AreaStandardDeviation") << "\n";
+  }
   if (!options.Quiet)
   {
-    vtkFieldData* fields = sites->GetFieldData();
     std::cout << "cvt image: " << sites->GetNumberOfPoints() << " sites, "
               << fields->GetArray("Iterations")->GetTuple1(0) << " iterations ("
               << fields->GetAbstractArray("StopReason")->GetVariantValue(0).ToString()
-              << "), energy " << std::setprecision(8) << fields->GetArray("Energy")->GetTuple1(0)
-              << ", |grad F| " << fields->GetArray("GradientNorm")->GetTuple1(0) << "\n"
+              << "), energy " << std::setprecision(8) << field("Energy") << ", |grad F| "
+              << field("GradientNorm") << "\n"
               << "  OpenGL: " << cvt->GetContextDescription() << "\n"
               << "  wrote sites.vtp sites.csv labels.vti dual.vtp history.csv cvt.png in "
               << options.Output << "\n";

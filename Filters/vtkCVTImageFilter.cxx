@@ -1,7 +1,9 @@
 #include "vtkCVTImageFilter.h"
 
 #include "cvtExactVoronoi.h"
+#include "cvtLBFGS.h"
 #include "cvtLloyd.h"
+#include "cvtQuality.h"
 #include "cvtSampling.h"
 #include "vtkCVTOpenGLEngine.h"
 
@@ -325,13 +327,15 @@ int vtkCVTImageFilter::RequestData(
     return 0;
   }
 
-  // --- Lloyd on the GPU.
+  // --- The optimiser, on the GPU engine.
   vtkNew<vtkCVTOpenGLEngine> engine;
   engine->SetAdaptiveStep(this->AdaptiveJumpFlooding);
   engine->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
   options.Tolerance = this->Tolerance;
+  options.GradientTolerance = this->GradientTolerance;
+  options.NumberOfCorrections = this->NumberOfCorrections;
   cvt::OptimizerResult result;
   std::string error;
   const auto progress = [this](double fraction)
@@ -341,7 +345,10 @@ int vtkCVTImageFilter::RequestData(
   };
   const bool ok = engine->SetDomain(grid, density) && engine->SetSites(sites);
   this->ContextDescription = engine->GetContextDescription();
-  if (!ok || !cvt::RunLloyd(*engine, options, progress, result, error))
+  const bool optimized = ok &&
+    (this->Method == LLOYD ? cvt::RunLloyd(*engine, options, progress, result, error)
+                           : cvt::RunLBFGS(*engine, grid, sites, options, progress, result, error));
+  if (!optimized)
   {
     vtkErrorMacro("The GPU CVT failed: " << (ok ? error : engine->GetLastError()) << ".");
     return 0;
@@ -353,6 +360,12 @@ int vtkCVTImageFilter::RequestData(
     return 0;
   }
   engine->ReleaseGraphicsResources();
+  if (result.StopReason.rfind("no sufficient decrease", 0) == 0)
+  {
+    vtkWarningMacro("L-BFGS stopped after " << result.Iterations
+                                            << " iterations: " << result.StopReason
+                                            << "; the output holds its best sites.");
+  }
 
   // --- Outputs.
   const vtkIdType n = static_cast<vtkIdType>(result.Sites.size() / 2);
@@ -386,6 +399,20 @@ int vtkCVTImageFilter::RequestData(
   AddFieldValue(fields, "GradientNorm", result.Sums.GradientNorm());
   AddFieldValue(fields, "Iterations", result.Iterations);
   AddFieldValue(fields, "Evaluations", result.Evaluations);
+  const cvt::QualityMeasures quality = cvt::MeasureQuality(grid, result.Sites);
+  AddFieldValue(fields, "HexagonalFraction", quality.HexagonalFraction);
+  AddFieldValue(fields, "RadiusStandardDeviation", quality.RadiusStandardDeviation);
+  AddFieldValue(
+    fields, "NearestNeighborStandardDeviation", quality.NearestNeighborStandardDeviation);
+  AddFieldValue(fields, "AreaStandardDeviation", quality.AreaStandardDeviation);
+  if (this->ComputeExactEnergy)
+  {
+    const double exact =
+      cvt::ExactCellSums(grid, result.Sites, densityChosen ? density : std::vector<float>())
+        .TotalEnergy();
+    AddFieldValue(fields, "ExactEnergy", exact);
+    AddFieldValue(fields, "EnergyRelativeDifference", (result.Sums.TotalEnergy() - exact) / exact);
+  }
   vtkNew<vtkStringArray> reason;
   reason->SetName("StopReason");
   reason->InsertNextValue(result.StopReason);
@@ -436,6 +463,10 @@ int vtkCVTImageFilter::RequestData(
 void vtkCVTImageFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << (this->Method == LLOYD ? "Lloyd" : "L-BFGS") << "\n";
+  os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
+  os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
+  os << indent << "ComputeExactEnergy: " << this->ComputeExactEnergy << "\n";
   os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";

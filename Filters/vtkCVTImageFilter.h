@@ -9,13 +9,20 @@
  * initial sites (any vtkPointSet; z is ignored); without it NumberOfSites sites are drawn with
  * probability proportional to the density, seeded by RandomSeed.
  *
- * Lloyd's method runs on the GPU (vtkCVTOpenGLEngine: 1+JFA labelling and a regional
- * reduction) until MaximumNumberOfIterations, or until no pixel changes site or the relative
- * energy decrease falls below Tolerance (0 runs every iteration).
+ * The energy is minimised on the GPU (vtkCVTOpenGLEngine: 1+JFA labelling and a regional
+ * reduction per evaluation) by L-BFGS (default; Liu et al. 2009, NumberOfCorrections kept) or
+ * by Lloyd's method (sites move to their centroids on the GPU), until
+ * MaximumNumberOfIterations, until |grad F| falls below GradientTolerance times its initial
+ * value, or until the relative energy decrease falls below Tolerance (Lloyd also stops when no
+ * pixel changes site; 0 runs every iteration). L-BFGS also stops, with a warning naming the
+ * reason, when no sufficient decrease is possible; its best sites are the output.
  *
  * Outputs:
  * 0. sites: vtkPolyData, one vertex per site, point arrays SiteId, Mass, Energy; field data
- *    Energy, GradientNorm, Iterations, Evaluations, StopReason;
+ *    Energy, GradientNorm, Iterations, Evaluations, StopReason, and the quality measures
+ *    HexagonalFraction, RadiusStandardDeviation, NearestNeighborStandardDeviation,
+ *    AreaStandardDeviation (Rong et al., Table 6); with ComputeExactEnergy also ExactEnergy
+ *    and EnergyRelativeDifference (GPU energy against the exact CPU one);
  * 1. labels: vtkImageData with the input's geometry, int point array SiteId;
  * 2. dual: the Delaunay triangulation of sites whose cells meet inside the domain,
  *    counter-clockwise triangles;
@@ -44,6 +51,12 @@ public:
   static vtkCVTImageFilter* New();
   vtkTypeMacro(vtkCVTImageFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Methods
+  {
+    LLOYD = 0,
+    LBFGS = 1
+  };
 
   enum OutputPorts
   {
@@ -81,6 +94,37 @@ public:
   ///@}
 
   ///@{
+  /** The optimiser: LBFGS (default) or LLOYD. */
+  vtkSetClampMacro(Method, int, LLOYD, LBFGS);
+  vtkGetMacro(Method, int);
+  void SetMethodToLloyd() { this->SetMethod(LLOYD); }
+  void SetMethodToLBFGS() { this->SetMethod(LBFGS); }
+  ///@}
+
+  ///@{
+  /** L-BFGS: number of corrections kept for the inverse Hessian (default 7). */
+  vtkSetClampMacro(NumberOfCorrections, int, 1, 100);
+  vtkGetMacro(NumberOfCorrections, int);
+  ///@}
+
+  ///@{
+  /** Stop when |grad F| falls below this fraction of its initial value (default 0: never). */
+  vtkSetClampMacro(GradientTolerance, double, 0.0, 1.0);
+  vtkGetMacro(GradientTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Also compute the exact energy of the output sites on the CPU (clipped Voronoi cells,
+   * integrated exactly for the pixelwise-constant density) and report the relative difference
+   * of the GPU energy to it (off by default: it costs CPU time).
+   */
+  vtkSetMacro(ComputeExactEnergy, bool);
+  vtkGetMacro(ComputeExactEnergy, bool);
+  vtkBooleanMacro(ComputeExactEnergy, bool);
+  ///@}
+
+  ///@{
   /** Engine options, see vtkCVTOpenGLEngine (both on by default). */
   vtkSetMacro(AdaptiveJumpFlooding, bool);
   vtkGetMacro(AdaptiveJumpFlooding, bool);
@@ -115,6 +159,10 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  int Method = LBFGS;
+  int NumberOfCorrections = 7;
+  double GradientTolerance = 0.0;
+  bool ComputeExactEnergy = false;
   int NumberOfSites = 1000;
   int RandomSeed = 1;
   int MaximumNumberOfIterations = 100;

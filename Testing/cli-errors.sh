@@ -29,6 +29,8 @@ expect_error "unknown option" image --frobnicate
 expect_error "expects a number" image --tolerance abc
 expect_error "XMIN < XMAX" image --domain 1 -1 0 1
 expect_error "lloyd or lbfgs" image --method newton
+expect_error "between 1 and 100" image --corrections 0
+expect_error "between 0 and 1" image --gradient-tolerance 2
 # No OpenGL context at all.
 if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
   echo "ran without an OpenGL context"; bad=1

@@ -110,6 +110,7 @@ TEST(ImageFilter, ProducesAllOutputs)
   filter->SetNumberOfSites(40);
   filter->SetMaximumNumberOfIterations(15);
   filter->SetTolerance(0.0);
+  filter->SetMethodToLloyd();
   int progressEvents = 0;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&progressEvents);
@@ -297,6 +298,61 @@ TEST(ImageFilter, PrintSelfNamesTheParameters)
   filter->Print(out);
   EXPECT_TRUE(Contains(out.str(), "NumberOfSites: 1000"));
   EXPECT_TRUE(Contains(out.str(), "Tolerance"));
+}
+
+TEST(ImageFilter, LBFGSIsTheDefaultAndReportsExactEnergyAndQuality)
+{
+  auto image = MakeImage(128, 128);
+  vtkNew<vtkCVTImageFilter> filter;
+  EXPECT_EQ(filter->GetMethod(), vtkCVTImageFilter::LBFGS);
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(60);
+  filter->SetMaximumNumberOfIterations(40);
+  filter->SetTolerance(0.0);
+  filter->ComputeExactEnergyOn();
+  filter->Update();
+  vtkFieldData* fields = filter->GetSitesOutput()->GetFieldData();
+  for (const char* name : { "Energy", "GradientNorm", "Iterations", "Evaluations",
+         "HexagonalFraction", "RadiusStandardDeviation", "NearestNeighborStandardDeviation",
+         "AreaStandardDeviation", "ExactEnergy", "EnergyRelativeDifference" })
+  {
+    ASSERT_NE(fields->GetArray(name), nullptr) << name;
+  }
+  const double energy = fields->GetArray("Energy")->GetTuple1(0);
+  EXPECT_NEAR(fields->GetArray("ExactEnergy")->GetTuple1(0), energy, 1e-4 * energy);
+  EXPECT_LT(std::abs(fields->GetArray("EnergyRelativeDifference")->GetTuple1(0)), 1e-4);
+  EXPECT_GT(fields->GetArray("HexagonalFraction")->GetTuple1(0), 0.3);
+  // L-BFGS evaluates at least once per iteration; the history counts both.
+  vtkTable* history = filter->GetHistoryOutput();
+  const vtkIdType last = history->GetNumberOfRows() - 1;
+  EXPECT_GE(history->GetValueByName(last, "evaluations").ToInt(),
+    history->GetValueByName(last, "iteration").ToInt() + 1);
+
+  // The same sites relaxed by Lloyd for as many evaluations end with a higher energy.
+  vtkNew<vtkCVTImageFilter> lloyd;
+  lloyd->SetInputData(image);
+  lloyd->SetNumberOfSites(60);
+  lloyd->SetMethodToLloyd();
+  lloyd->SetTolerance(0.0);
+  lloyd->SetMaximumNumberOfIterations(
+    static_cast<int>(fields->GetArray("Evaluations")->GetTuple1(0)) - 1);
+  lloyd->Update();
+  EXPECT_GT(lloyd->GetSitesOutput()->GetFieldData()->GetArray("Energy")->GetTuple1(0), energy);
+}
+
+TEST(ImageFilter, GradientToleranceStops)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(64, 64));
+  filter->SetNumberOfSites(20);
+  filter->SetMaximumNumberOfIterations(500);
+  filter->SetTolerance(0.0);
+  filter->SetGradientTolerance(0.05);
+  filter->Update();
+  vtkFieldData* fields = filter->GetSitesOutput()->GetFieldData();
+  EXPECT_LT(fields->GetArray("Iterations")->GetTuple1(0), 500);
+  EXPECT_EQ(fields->GetAbstractArray("StopReason")->GetVariantValue(0).ToString(),
+    "gradient tolerance reached");
 }
 
 // --- Bad input: a clear error, empty outputs, never a crash.

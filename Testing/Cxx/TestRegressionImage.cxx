@@ -27,6 +27,7 @@ TEST(RegressionImage, RenderedCVTMatchesTheBaseline)
   cvt->SetInputData(image);
   cvt->SetNumberOfSites(30);
   cvt->SetRandomSeed(7);
+  cvt->SetMethodToLloyd(); // the baseline is a Lloyd result
   cvt->SetMaximumNumberOfIterations(40);
   cvt->SetTolerance(0.0);
   cvt->Update();
