@@ -202,7 +202,7 @@ bool RunLBFGS(Engine& engine, const Grid& grid, const std::vector<double>& sites
   try
   {
     solver.minimize(objective, x, energy, lower, upper);
-    result.StopReason = "converged";
+    result.StopReason = "the solver reported convergence";
   }
   catch (const StopOptimizer& stop)
   {
