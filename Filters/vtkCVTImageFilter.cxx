@@ -28,6 +28,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 vtkStandardNewMacro(vtkCVTImageFilter);
 
@@ -254,7 +255,8 @@ int vtkCVTImageFilter::RequestData(
   std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
   const bool densityChosen = arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_NAME()) &&
-    arrayInfo->Get(vtkDataObject::FIELD_NAME())[0] != '\0';
+    arrayInfo->Get(vtkDataObject::FIELD_NAME())[0] != '\0' &&
+    std::string(arrayInfo->Get(vtkDataObject::FIELD_NAME())) != UniformDensityName();
   if (densityChosen)
   {
     vtkDataArray* array = this->GetInputArrayToProcess(0, inputVector);

@@ -132,6 +132,12 @@ bool vtkCVTOpenGLContext::Initialize()
 }
 
 //------------------------------------------------------------------------------
+vtkOpenGLRenderWindow* vtkCVTOpenGLContext::GetRenderWindow() const
+{
+  return this->Window;
+}
+
+//------------------------------------------------------------------------------
 void vtkCVTOpenGLContext::MakeCurrent()
 {
   SavedContext& saved = *this->Saved;

@@ -30,7 +30,7 @@ public:
   /** Find a context. Returns false with a message in GetLastError() when there is none. */
   bool Initialize();
   bool IsInitialized() const { return this->Window != nullptr; }
-  vtkOpenGLRenderWindow* GetRenderWindow() const { return this->Window; }
+  vtkOpenGLRenderWindow* GetRenderWindow() const;
 
   /** Make the context current, remembering the thread's previous context. */
   void MakeCurrent();

@@ -423,8 +423,8 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
       // Start from the first pass's seeds.
       in.SeedsFramebuffer[0]->Bind(GL_READ_FRAMEBUFFER);
       in.SeedsFramebuffer[0]->ActivateReadBuffer(0);
-      state->vtkglBlitFramebuffer(0, 0, this->GridSize[0], this->GridSize[1], 0, 0, this->GridSize[0], this->GridSize[1],
-        GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      state->vtkglBlitFramebuffer(0, 0, this->GridSize[0], this->GridSize[1], 0, 0,
+        this->GridSize[0], this->GridSize[1], GL_COLOR_BUFFER_BIT, GL_NEAREST);
       state->vtkglClearDepth(1.0);
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
       in.Seeds[0]->Activate();

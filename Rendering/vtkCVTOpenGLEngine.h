@@ -114,7 +114,7 @@ private:
   bool CheckGLError(const char* where);
 
   cvt::Grid Grid;
-  int GridSize[2] = { 0, 0 };     // Grid.Width, Grid.Height, as shader uniforms want them
+  int GridSize[2] = { 0, 0 };       // Grid.Width, Grid.Height, as shader uniforms want them
   float Metric[2] = { 1.0f, 1.0f }; // Grid.Spacing in float
   int NumberOfSites = 0;
   int SlotSize[2] = { 0, 0 };

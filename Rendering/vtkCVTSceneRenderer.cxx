@@ -86,7 +86,10 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
 
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1.0, 1.0, 1.0);
-  renderer->AddActor(cells);
+  if (this->ShowCells)
+  {
+    renderer->AddActor(cells);
+  }
   vtkNew<vtkPolyDataMapper> siteMapper;
   vtkNew<vtkActor> siteActor;
   if (sites && sites->GetNumberOfPoints() > 0)
@@ -129,5 +132,6 @@ void vtkCVTSceneRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Size: " << this->Size << "\n";
+  os << indent << "ShowCells: " << this->ShowCells << "\n";
   os << indent << "PointSize: " << this->PointSize << "\n";
 }

@@ -32,6 +32,13 @@ public:
   ///@}
 
   ///@{
+  /** Draw the cells coloured by site (default on); off draws black dots on white (stippling). */
+  vtkSetMacro(ShowCells, bool);
+  vtkGetMacro(ShowCells, bool);
+  vtkBooleanMacro(ShowCells, bool);
+  ///@}
+
+  ///@{
   /** Diameter of the site dots in pixels (default 4). */
   vtkSetClampMacro(PointSize, double, 0.0, 64.0);
   vtkGetMacro(PointSize, double);
@@ -53,6 +60,7 @@ private:
   void operator=(const vtkCVTSceneRenderer&) = delete;
 
   int Size = 800;
+  bool ShowCells = true;
   double PointSize = 4.0;
   std::string LastError;
 };

@@ -21,7 +21,7 @@ packages=(
   libprotobuf-dev protobuf-compiler
   libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
   libeigen3-dev libglm-dev liblbfgspp-dev
-  libgtest-dev googletest python3-matplotlib
+  libgtest-dev googletest python3-matplotlib xvfb xauth
 )
 missing=()
 for p in "${packages[@]}"; do

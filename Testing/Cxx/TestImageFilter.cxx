@@ -436,6 +436,17 @@ TEST(ImageFilterBadInput, MissingDensityArray)
   EXPECT_TRUE(Contains(RunExpectingError(filter), "'nothere'"));
 }
 
+TEST(ImageFilter, UniformDensityNameMeansNoArray)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(16, 16));
+  filter->SetNumberOfSites(4);
+  filter->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkCVTImageFilter::UniformDensityName());
+  filter->Update();
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 4);
+}
+
 TEST(ImageFilterBadInput, MultiComponentDensity)
 {
   auto image = MakeImage(8, 8);
