@@ -6,6 +6,7 @@
 #include "cvtQuality.h"
 #include "cvtSampling.h"
 #include "vtkCVTOpenGLEngine.h"
+#include "vtkCVTOutputHelpers.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -79,15 +80,6 @@ vtkSmartPointer<vtkCellArray> DualTriangles(vtkPolyData* sites, const cvt::Grid&
     triangles->InsertNextCell(3, triangle);
   }
   return triangles;
-}
-
-template<typename T>
-void AddFieldValue(vtkFieldData* fields, const char* name, T value)
-{
-  vtkNew<vtkDoubleArray> array;
-  array->SetName(name);
-  array->InsertNextValue(static_cast<double>(value));
-  fields->AddArray(array);
 }
 }
 
@@ -397,28 +389,26 @@ int vtkCVTImageFilter::RequestData(
   sitesOut->GetPointData()->AddArray(mass);
   sitesOut->GetPointData()->AddArray(energy);
   vtkFieldData* fields = sitesOut->GetFieldData();
-  AddFieldValue(fields, "Energy", result.Sums.TotalEnergy());
-  AddFieldValue(fields, "GradientNorm", result.Sums.GradientNorm());
-  AddFieldValue(fields, "Iterations", result.Iterations);
-  AddFieldValue(fields, "Evaluations", result.Evaluations);
+  cvtvtk::AddFieldValue(fields, "Energy", result.Sums.TotalEnergy());
+  cvtvtk::AddFieldValue(fields, "GradientNorm", result.Sums.GradientNorm());
+  cvtvtk::AddFieldValue(fields, "Iterations", result.Iterations);
+  cvtvtk::AddFieldValue(fields, "Evaluations", result.Evaluations);
   const cvt::QualityMeasures quality = cvt::MeasureQuality(grid, result.Sites);
-  AddFieldValue(fields, "HexagonalFraction", quality.HexagonalFraction);
-  AddFieldValue(fields, "RadiusStandardDeviation", quality.RadiusStandardDeviation);
-  AddFieldValue(
+  cvtvtk::AddFieldValue(fields, "HexagonalFraction", quality.HexagonalFraction);
+  cvtvtk::AddFieldValue(fields, "RadiusStandardDeviation", quality.RadiusStandardDeviation);
+  cvtvtk::AddFieldValue(
     fields, "NearestNeighborStandardDeviation", quality.NearestNeighborStandardDeviation);
-  AddFieldValue(fields, "AreaStandardDeviation", quality.AreaStandardDeviation);
+  cvtvtk::AddFieldValue(fields, "AreaStandardDeviation", quality.AreaStandardDeviation);
   if (this->ComputeExactEnergy)
   {
     const double exact =
       cvt::ExactCellSums(grid, result.Sites, densityChosen ? density : std::vector<float>())
         .TotalEnergy();
-    AddFieldValue(fields, "ExactEnergy", exact);
-    AddFieldValue(fields, "EnergyRelativeDifference", (result.Sums.TotalEnergy() - exact) / exact);
+    cvtvtk::AddFieldValue(fields, "ExactEnergy", exact);
+    cvtvtk::AddFieldValue(
+      fields, "EnergyRelativeDifference", (result.Sums.TotalEnergy() - exact) / exact);
   }
-  vtkNew<vtkStringArray> reason;
-  reason->SetName("StopReason");
-  reason->InsertNextValue(result.StopReason);
-  fields->AddArray(reason);
+  cvtvtk::AddFieldString(fields, "StopReason", result.StopReason);
 
   labelsOut->SetExtent(image->GetExtent());
   labelsOut->SetSpacing(spacing);
@@ -438,26 +428,7 @@ int vtkCVTImageFilter::RequestData(
   dualIds->DeepCopy(siteIds);
   dualOut->GetPointData()->AddArray(dualIds);
 
-  vtkNew<vtkIntArray> iterationColumn, evaluationColumn;
-  iterationColumn->SetName("iteration");
-  evaluationColumn->SetName("evaluations");
-  vtkNew<vtkDoubleArray> energyColumn, gradientColumn, secondsColumn;
-  energyColumn->SetName("energy");
-  gradientColumn->SetName("gradient_norm");
-  secondsColumn->SetName("seconds");
-  for (const cvt::HistoryEntry& entry : result.History)
-  {
-    iterationColumn->InsertNextValue(entry.Iteration);
-    evaluationColumn->InsertNextValue(entry.Evaluations);
-    energyColumn->InsertNextValue(entry.Energy);
-    gradientColumn->InsertNextValue(entry.GradientNorm);
-    secondsColumn->InsertNextValue(entry.Seconds);
-  }
-  historyOut->AddColumn(iterationColumn);
-  historyOut->AddColumn(evaluationColumn);
-  historyOut->AddColumn(energyColumn);
-  historyOut->AddColumn(gradientColumn);
-  historyOut->AddColumn(secondsColumn);
+  cvtvtk::FillHistoryTable(historyOut, result.History);
   return 1;
 }
 

@@ -1,6 +1,7 @@
 #include "vtkCVTOpenGLEngine.h"
 
 #include "vtkCVTOpenGLContext.h"
+#include "vtkCVTOpenGLHelpers.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -29,6 +30,8 @@
 
 vtkStandardNewMacro(vtkCVTOpenGLEngine);
 
+using namespace cvtgl;
+
 namespace
 {
 constexpr int MaxCandidates = 4; // must match vtkCVTSplitPixelsFS.glsl
@@ -42,24 +45,6 @@ int NextPowerOfTwo(double value)
   }
   return p;
 }
-
-/// Makes the engine's context current for the lifetime of the object and gives the thread
-/// its previous context back afterwards, whatever path the caller leaves by.
-class ScopedContext
-{
-public:
-  explicit ScopedContext(vtkCVTOpenGLContext* context)
-    : Context(context)
-  {
-    this->Context->MakeCurrent();
-  }
-  ~ScopedContext() { this->Context->RestorePrevious(); }
-  ScopedContext(const ScopedContext&) = delete;
-  ScopedContext& operator=(const ScopedContext&) = delete;
-
-private:
-  vtkCVTOpenGLContext* Context;
-};
 
 using Clock = std::chrono::steady_clock;
 double MillisecondsSince(Clock::time_point start)
@@ -166,74 +151,6 @@ bool vtkCVTOpenGLEngine::CheckGLError(const char* where)
   std::ostringstream msg;
   msg << "OpenGL error 0x" << std::hex << error << " during " << where;
   return this->Fail(msg.str());
-}
-
-namespace
-{
-/// Makes `texture` a nearest-filtered float texture of the given size and components.
-bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
-  int height, int components, const float* data = nullptr)
-{
-  texture->SetContext(window);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  if (data)
-  {
-    return texture->Create2DFromRaw(width, height, components, VTK_FLOAT, const_cast<float*>(data));
-  }
-  return texture->Allocate2D(width, height, components, VTK_FLOAT);
-}
-
-bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
-  vtkTextureObject* target0, vtkTextureObject* target1 = nullptr, bool depth = false)
-{
-  framebuffer->SetContext(window);
-  window->GetState()->PushFramebufferBindings();
-  framebuffer->Bind();
-  framebuffer->AddColorAttachment(0, target0);
-  if (depth)
-  {
-    framebuffer->AddDepthAttachment();
-  }
-  if (target1)
-  {
-    framebuffer->AddColorAttachment(1, target1);
-  }
-  framebuffer->ActivateDrawBuffers(target1 ? 2 : 1);
-  const bool complete = framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
-  window->GetState()->PopFramebufferBindings();
-  return complete;
-}
-
-/// Creates a full-screen quad program on first use and binds it; nullptr if it did not compile.
-vtkShaderProgram* ReadyQuad(
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* window, const char* fragment)
-{
-  if (!quad)
-  {
-    quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fragment, ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  }
-  return quad->Program && quad->Program->GetCompiled() ? quad->Program : nullptr;
-}
-
-/// Reads a float render target back (RGBA or R).
-void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
-  int attachment, int width, int height, GLenum format, float* out)
-{
-  vtkOpenGLState* state = window->GetState();
-  state->PushFramebufferBindings();
-  framebuffer->Bind(GL_READ_FRAMEBUFFER);
-  framebuffer->ActivateReadBuffer(attachment);
-  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, format, GL_FLOAT, out);
-  state->PopFramebufferBindings();
-}
 }
 
 //------------------------------------------------------------------------------

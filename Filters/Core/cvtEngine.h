@@ -49,12 +49,14 @@ struct Grid
 struct CellSums
 {
   std::vector<double> Mass, MomentX, MomentY, Energy;
+  std::vector<double> MomentZ; // surfaces only (3D sites); empty in 2D
 
-  void Resize(size_t n)
+  void Resize(size_t n, bool threeD = false)
   {
     this->Mass.assign(n, 0.0);
     this->MomentX.assign(n, 0.0);
     this->MomentY.assign(n, 0.0);
+    this->MomentZ.assign(threeD ? n : 0, 0.0);
     this->Energy.assign(n, 0.0);
   }
   size_t Size() const { return this->Mass.size(); }
@@ -74,6 +76,10 @@ struct CellSums
     for (size_t i = 0; i < this->Size(); ++i)
     {
       g += 4.0 * (this->MomentX[i] * this->MomentX[i] + this->MomentY[i] * this->MomentY[i]);
+      if (!this->MomentZ.empty())
+      {
+        g += 4.0 * this->MomentZ[i] * this->MomentZ[i];
+      }
     }
     return std::sqrt(g);
   }

@@ -1,5 +1,7 @@
 #include "cvtLBFGS.h"
 
+#include "cvtReportingLineSearch.h"
+
 #include <Eigen/Core>
 #include <LBFGSB.h>
 
@@ -159,22 +161,6 @@ private:
   std::vector<double> LastSites;
 };
 
-/// LBFGS++'s More-Thuente line search, reporting every accepted iterate to the objective.
-template<typename Scalar>
-class ReportingLineSearch
-{
-public:
-  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  template<typename Function>
-  static void LineSearch(Function& f, Scalar& fx, Vector& x, Vector& grad, Scalar& step,
-    const Scalar& stepMax, const Vector& direction, const Vector& previous,
-    const LBFGSpp::LBFGSBParam<Scalar>& param)
-  {
-    LBFGSpp::LineSearchMoreThuente<Scalar>::LineSearch(
-      f, fx, x, grad, step, stepMax, direction, previous, param);
-    f.AcceptIterate(fx, grad);
-  }
-};
 }
 
 bool RunLBFGS(Engine& engine, const Grid& grid, const std::vector<double>& sites,

@@ -1,0 +1,349 @@
+#include "cvtSurface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+#include <sstream>
+#include <unordered_set>
+
+namespace cvt
+{
+
+namespace
+{
+using Vec3 = std::array<double, 3>;
+
+Vec3 At(const std::vector<float>& values, long long p)
+{
+  return { values[3 * p], values[3 * p + 1], values[3 * p + 2] };
+}
+Vec3 Sub(const Vec3& a, const Vec3& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+double Dot(const Vec3& a, const Vec3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec3 Cross(const Vec3& a, const Vec3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+Vec3 Along(const Vec3& a, const Vec3& d, double t)
+{
+  return { a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2] };
+}
+double Distance2(const Vec3& a, const Vec3& b)
+{
+  const Vec3 d = Sub(a, b);
+  return Dot(d, d);
+}
+
+/// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
+Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 ab = Sub(b, a), ac = Sub(c, a), ap = Sub(p, a);
+  const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0)
+    return a;
+  const Vec3 bp = Sub(p, b);
+  const double d3 = Dot(ab, bp), d4 = Dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3)
+    return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+    return Along(a, ab, d1 / (d1 - d3));
+  const Vec3 cp = Sub(p, c);
+  const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6)
+    return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+    return Along(a, ac, d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+    return Along(b, Sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double denominator = 1.0 / (va + vb + vc);
+  const double v = vb * denominator, w = vc * denominator;
+  return { a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w,
+    a[2] + ab[2] * v + ac[2] * w };
+}
+
+/// The four pixels of the quad whose lower-left corner is (i, j), counter-clockwise in (u, v);
+/// false when the quad leaves the image or touches a masked pixel.
+bool Quad(const GeometryImage& image, int i, int j, long long quad[4])
+{
+  quad[0] = image.Neighbor(i, j, 0, 0);
+  quad[1] = image.Neighbor(i, j, 1, 0);
+  quad[2] = image.Neighbor(i, j, 1, 1);
+  quad[3] = image.Neighbor(i, j, 0, 1);
+  for (int k = 0; k < 4; ++k)
+  {
+    if (quad[k] < 0 || !image.IsValid(quad[k]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+long long GeometryImage::Neighbor(int i, int j, int di, int dj) const
+{
+  int u = i + di, v = j + dj;
+  if (this->WrapU)
+  {
+    u = ((u % this->Width) + this->Width) % this->Width;
+  }
+  if (this->WrapV)
+  {
+    v = ((v % this->Height) + this->Height) % this->Height;
+  }
+  if (u < 0 || v < 0 || u >= this->Width || v >= this->Height)
+  {
+    return -1;
+  }
+  return static_cast<long long>(v) * this->Width + u;
+}
+
+std::vector<float> ComputeAreaWeights(const GeometryImage& image)
+{
+  std::vector<double> weights(static_cast<size_t>(image.NumberOfPixels()), 0.0);
+  long long quad[4];
+  for (int j = 0; j < image.Height; ++j)
+  {
+    for (int i = 0; i < image.Width; ++i)
+    {
+      if (!Quad(image, i, j, quad))
+      {
+        continue;
+      }
+      // Triangles (0, 1, 2) and (0, 2, 3): a third of each area to each corner.
+      const int triangles[2][3] = { { 0, 1, 2 }, { 0, 2, 3 } };
+      for (const auto& t : triangles)
+      {
+        const Vec3 a = At(image.Position, quad[t[0]]), b = At(image.Position, quad[t[1]]),
+                   c = At(image.Position, quad[t[2]]);
+        const Vec3 n = Cross(Sub(b, a), Sub(c, a));
+        const double third = 0.5 * std::sqrt(Dot(n, n)) / 3.0;
+        for (int k : t)
+        {
+          weights[quad[k]] += third;
+        }
+      }
+    }
+  }
+  return std::vector<float>(weights.begin(), weights.end());
+}
+
+std::string CheckGeometryImage(const GeometryImage& image, int numberOfSites)
+{
+  const long long pixels = image.NumberOfPixels();
+  if (image.Width < 2 || image.Height < 2)
+  {
+    return "the geometry image needs at least 2 x 2 pixels";
+  }
+  if (static_cast<long long>(image.Position.size()) != 3 * pixels)
+  {
+    return "the geometry image has no 3-component position per pixel";
+  }
+  if (static_cast<long long>(image.Normal.size()) != 3 * pixels)
+  {
+    return "the geometry image has no 3-component normal per pixel";
+  }
+  if (static_cast<long long>(image.AreaWeight.size()) != pixels)
+  {
+    return "the geometry image has no area weight per pixel";
+  }
+  if (!image.Mask.empty() && static_cast<long long>(image.Mask.size()) != pixels)
+  {
+    return "the geometry image's mask does not hold one value per pixel";
+  }
+  long long valid = 0;
+  for (long long p = 0; p < pixels; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!std::isfinite(image.Position[3 * p + c]) || !std::isfinite(image.Normal[3 * p + c]))
+      {
+        std::ostringstream msg;
+        msg << "pixel " << p << " has a position or normal that is not finite (NaN)";
+        return msg.str();
+      }
+    }
+    if (!std::isfinite(image.AreaWeight[p]) || image.AreaWeight[p] < 0.0f)
+    {
+      std::ostringstream msg;
+      msg << "pixel " << p << " has a negative or non-finite area weight";
+      return msg.str();
+    }
+    valid += image.IsValid(p) ? 1 : 0;
+  }
+  if (numberOfSites <= 0)
+  {
+    return "there are no sites; ask for at least one";
+  }
+  if (valid < numberOfSites)
+  {
+    std::ostringstream msg;
+    msg << "the mask leaves " << valid << " pixels on the surface, fewer than the " << numberOfSites
+        << " sites; use fewer sites or a finer geometry image";
+    return msg.str();
+  }
+  return std::string();
+}
+
+std::vector<double> SampleSurfaceSites(
+  const GeometryImage& image, int count, std::uint64_t seed, std::vector<long long>& pixels)
+{
+  std::mt19937_64 rng(seed);
+  const auto uniform = [&rng]()
+  { return static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0); };
+  const long long n = image.NumberOfPixels();
+  std::vector<double> cumulative(static_cast<size_t>(n));
+  double total = 0.0;
+  for (long long p = 0; p < n; ++p)
+  {
+    total += image.IsValid(p) ? image.AreaWeight[p] : 0.0;
+    cumulative[p] = total;
+  }
+  std::vector<double> sites;
+  pixels.clear();
+  std::unordered_set<long long> taken;
+  for (int attempt = 0; static_cast<int>(pixels.size()) < count && attempt < 100 * count + 1000;
+       ++attempt)
+  {
+    long long p = std::upper_bound(cumulative.begin(), cumulative.end(), uniform() * total) -
+      cumulative.begin();
+    p = std::min(p, n - 1);
+    if (!image.IsValid(p) || !taken.insert(p).second)
+    {
+      continue; // one site per pixel: sites never coincide
+    }
+    pixels.push_back(p);
+    for (int c = 0; c < 3; ++c)
+    {
+      sites.push_back(image.Position[3 * p + c]);
+    }
+  }
+  return sites;
+}
+
+void NearestPointsInCells(const GeometryImage& image, const std::vector<int>& labels,
+  const std::vector<double>& targets, std::vector<double>& sites, std::vector<long long>& pixels)
+{
+  const size_t n = targets.size() / 3;
+  std::vector<double> best(n, std::numeric_limits<double>::infinity());
+  long long quad[4];
+  for (int j = 0; j < image.Height; ++j)
+  {
+    for (int i = 0; i < image.Width; ++i)
+    {
+      const long long p = static_cast<long long>(j) * image.Width + i;
+      const int label = labels[p];
+      if (label < 0 || !image.IsValid(p) || !Quad(image, i, j, quad))
+      {
+        continue;
+      }
+      const Vec3 target{ targets[3 * label], targets[3 * label + 1], targets[3 * label + 2] };
+      const int triangles[2][3] = { { 0, 1, 2 }, { 0, 2, 3 } };
+      for (const auto& t : triangles)
+      {
+        const Vec3 a = At(image.Position, quad[t[0]]), b = At(image.Position, quad[t[1]]),
+                   c = At(image.Position, quad[t[2]]);
+        const Vec3 q = ClosestPointOnTriangle(target, a, b, c);
+        const double d2 = Distance2(q, target);
+        if (d2 < best[label])
+        {
+          best[label] = d2;
+          for (int k = 0; k < 3; ++k)
+          {
+            sites[3 * label + k] = q[k];
+          }
+          // The pixel holding the site: the triangle corner nearest to it.
+          long long nearest = quad[t[0]];
+          for (int k : t)
+          {
+            if (Distance2(At(image.Position, quad[k]), q) <
+              Distance2(At(image.Position, nearest), q))
+            {
+              nearest = quad[k];
+            }
+          }
+          pixels[label] = nearest;
+        }
+      }
+    }
+  }
+}
+
+std::vector<std::array<int, 3>> DualTriangles(
+  const GeometryImage& image, const std::vector<int>& labels, const std::vector<double>& sites)
+{
+  std::vector<std::array<int, 3>> triangles;
+  std::set<std::array<int, 3>> seen;
+  const auto add = [&](int a, int b, int c)
+  {
+    std::array<int, 3> key{ a, b, c };
+    std::sort(key.begin(), key.end());
+    if (key[0] != key[1] && key[1] != key[2] && seen.insert(key).second)
+    {
+      triangles.push_back({ a, b, c });
+    }
+  };
+  const auto site = [&sites](int s) {
+    return Vec3{ sites[3 * s], sites[3 * s + 1], sites[3 * s + 2] };
+  };
+  long long quad[4];
+  for (int j = 0; j < image.Height; ++j)
+  {
+    for (int i = 0; i < image.Width; ++i)
+    {
+      if (!Quad(image, i, j, quad))
+      {
+        continue;
+      }
+      // Labels around the corner, counter-clockwise, consecutive repeats merged.
+      std::vector<int> ring;
+      for (int k = 0; k < 4; ++k)
+      {
+        const int label = labels[quad[k]];
+        if (label < 0)
+        {
+          ring.clear();
+          break;
+        }
+        if (ring.empty() || ring.back() != label)
+        {
+          ring.push_back(label);
+        }
+      }
+      if (ring.size() > 1 && ring.front() == ring.back())
+      {
+        ring.pop_back();
+      }
+      if (ring.size() == 3)
+      {
+        add(ring[0], ring[1], ring[2]);
+      }
+      else if (ring.size() == 4 && ring[0] != ring[2] && ring[1] != ring[3])
+      {
+        if (Distance2(site(ring[0]), site(ring[2])) <= Distance2(site(ring[1]), site(ring[3])))
+        {
+          add(ring[0], ring[1], ring[2]);
+          add(ring[0], ring[2], ring[3]);
+        }
+        else
+        {
+          add(ring[0], ring[1], ring[3]);
+          add(ring[1], ring[2], ring[3]);
+        }
+      }
+    }
+  }
+  return triangles;
+}
+
+} // namespace cvt

@@ -1,0 +1,351 @@
+#include "vtkCVTSurfaceFilter.h"
+
+#include "cvtSurface.h"
+#include "cvtSurfaceOptimizer.h"
+#include "vtkCVTOutputHelpers.h"
+#include "vtkCVTSurfaceEngine.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkCVTSurfaceFilter);
+
+namespace
+{
+/// Unit normals from central differences of the positions (wrap-aware), for geometry images
+/// that bring none.
+std::vector<float> NormalsFromPositions(const cvt::GeometryImage& image)
+{
+  std::vector<float> normals(image.Position.size(), 0.0f);
+  for (int j = 0; j < image.Height; ++j)
+  {
+    for (int i = 0; i < image.Width; ++i)
+    {
+      const auto at = [&](int di, int dj)
+      {
+        long long q = image.Neighbor(i, j, di, dj);
+        return q < 0 ? image.Neighbor(i, j, 0, 0) : q;
+      };
+      const long long right = at(1, 0), left = at(-1, 0), up = at(0, 1), down = at(0, -1);
+      double du[3], dv[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        du[c] = image.Position[3 * right + c] - image.Position[3 * left + c];
+        dv[c] = image.Position[3 * up + c] - image.Position[3 * down + c];
+      }
+      double n[3] = { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
+        du[0] * dv[1] - du[1] * dv[0] };
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const size_t p = static_cast<size_t>(j) * image.Width + i;
+      for (int c = 0; c < 3; ++c)
+      {
+        normals[3 * p + c] =
+          length > 0.0 ? static_cast<float>(n[c] / length) : (c == 2 ? 1.0f : 0.0f);
+      }
+    }
+  }
+  return normals;
+}
+
+bool ReadFloats(vtkDataArray* array, int components, std::vector<float>& out)
+{
+  if (!array || array->GetNumberOfComponents() != components)
+  {
+    return false;
+  }
+  out.resize(static_cast<size_t>(array->GetNumberOfTuples()) * components);
+  for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      out[static_cast<size_t>(t) * components + c] = static_cast<float>(array->GetComponent(t, c));
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkCVTSurfaceFilter::vtkCVTSurfaceFilter()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(4);
+}
+
+vtkPolyData* vtkCVTSurfaceFilter::GetSitesOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(SitesPort));
+}
+vtkImageData* vtkCVTSurfaceFilter::GetLabelsOutput()
+{
+  return vtkImageData::SafeDownCast(this->GetOutputDataObject(LabelsPort));
+}
+vtkPolyData* vtkCVTSurfaceFilter::GetRemeshOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(RemeshPort));
+}
+vtkTable* vtkCVTSurfaceFilter::GetHistoryOutput()
+{
+  return vtkTable::SafeDownCast(this->GetOutputDataObject(HistoryPort));
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTSurfaceFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTSurfaceFilter::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(),
+    port == LabelsPort ? "vtkImageData" : (port == HistoryPort ? "vtkTable" : "vtkPolyData"));
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTSurfaceFilter::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* labelsInfo = outputVector->GetInformationObject(LabelsPort);
+  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
+  {
+    labelsInfo->Set(SDDP::WHOLE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTSurfaceFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
+  {
+    inInfo->Set(SDDP::UPDATE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
+    inInfo->Set(SDDP::EXACT_EXTENT(), 1);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTSurfaceFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
+  vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
+  vtkPolyData* remeshOut = vtkPolyData::GetData(outputVector, RemeshPort);
+  vtkTable* historyOut = vtkTable::GetData(outputVector, HistoryPort);
+  sitesOut->Initialize();
+  labelsOut->Initialize();
+  remeshOut->Initialize();
+  historyOut->Initialize();
+  this->ContextDescription.clear();
+
+  // --- The geometry image.
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("The geometry image is empty; give a vtkImageData with a Position array.");
+    return 0;
+  }
+  int dims[3];
+  input->GetDimensions(dims);
+  if (dims[2] != 1)
+  {
+    vtkErrorMacro("The geometry image is 3D (" << dims[0] << " x " << dims[1] << " x " << dims[2]
+                                               << "); it must be one 2D slice.");
+    return 0;
+  }
+  cvt::GeometryImage image;
+  image.Width = dims[0];
+  image.Height = dims[1];
+  vtkFieldData* inFields = input->GetFieldData();
+  image.WrapU = inFields->GetArray("WrapU") && inFields->GetArray("WrapU")->GetTuple1(0) != 0.0;
+  image.WrapV = inFields->GetArray("WrapV") && inFields->GetArray("WrapV")->GetTuple1(0) != 0.0;
+  vtkPointData* pd = input->GetPointData();
+  if (!ReadFloats(pd->GetArray("Position"), 3, image.Position))
+  {
+    vtkErrorMacro("The geometry image has no 3-component point array 'Position'; make one with "
+                  "vtkCVTGeometryImageSource.");
+    return 0;
+  }
+  if (!ReadFloats(pd->GetArray("Normal"), 3, image.Normal))
+  {
+    image.Normal = NormalsFromPositions(image);
+  }
+  if (vtkDataArray* mask = pd->GetArray("Mask"))
+  {
+    image.Mask.resize(static_cast<size_t>(mask->GetNumberOfTuples()));
+    for (vtkIdType p = 0; p < mask->GetNumberOfTuples(); ++p)
+    {
+      image.Mask[p] = mask->GetComponent(p, 0) != 0.0 ? 1 : 0;
+    }
+  }
+  if (!ReadFloats(pd->GetArray("AreaWeight"), 1, image.AreaWeight))
+  {
+    image.AreaWeight = cvt::ComputeAreaWeights(image);
+  }
+  const std::string problem = cvt::CheckGeometryImage(image, this->NumberOfSites);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Bad geometry image: " << problem << ".");
+    return 0;
+  }
+  double minimumWeight = VTK_DOUBLE_MAX, maximumWeight = 0.0, area = 0.0;
+  long long valid = 0;
+  for (long long p = 0; p < image.NumberOfPixels(); ++p)
+  {
+    if (image.IsValid(p))
+    {
+      minimumWeight = std::min(minimumWeight, static_cast<double>(image.AreaWeight[p]));
+      maximumWeight = std::max(maximumWeight, static_cast<double>(image.AreaWeight[p]));
+      area += image.AreaWeight[p];
+      ++valid;
+    }
+  }
+  // A cell should cover a good many pixels, even where pixels are largest.
+  const double cellArea = area / this->NumberOfSites;
+  if (maximumWeight > cellArea / 8.0)
+  {
+    vtkWarningMacro("The geometry image is coarse for "
+      << this->NumberOfSites << " sites: its largest pixels cover " << maximumWeight / cellArea
+      << " of a cell; use a finer resolution.");
+  }
+
+  // --- Sites and the optimiser on the GPU engine.
+  std::vector<long long> pixels;
+  const std::vector<double> sites = cvt::SampleSurfaceSites(
+    image, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed), pixels);
+  if (static_cast<int>(pixels.size()) < this->NumberOfSites)
+  {
+    vtkErrorMacro("Only " << pixels.size() << " distinct pixels could hold the "
+                          << this->NumberOfSites << " sites; use fewer sites or a finer image.");
+    return 0;
+  }
+  vtkNew<vtkCVTSurfaceEngine> engine;
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+  options.Tolerance = this->Tolerance;
+  options.GradientTolerance = this->GradientTolerance;
+  options.NumberOfCorrections = this->NumberOfCorrections;
+  cvt::SurfaceResult result;
+  std::string error;
+  const auto progress = [this](double fraction)
+  {
+    this->UpdateProgress(fraction);
+    return !this->GetAbortExecute();
+  };
+  const bool ready = engine->SetGeometryImage(image);
+  this->ContextDescription = engine->GetContextDescription();
+  const bool optimized = ready &&
+    (this->Method == LLOYD
+        ? cvt::RunSurfaceLloyd(*engine, image, sites, pixels, options, progress, result, error)
+        : cvt::RunSurfaceLBFGS(*engine, image, sites, pixels, options, progress, result, error));
+  engine->ReleaseGraphicsResources();
+  if (!optimized)
+  {
+    vtkErrorMacro(
+      "The GPU surface CVT failed: " << (ready ? error : engine->GetLastError()) << ".");
+    return 0;
+  }
+  if (result.StopReason.rfind("no sufficient decrease", 0) == 0)
+  {
+    vtkWarningMacro("L-BFGS stopped after " << result.Iterations
+                                            << " iterations: " << result.StopReason
+                                            << "; the output holds its best sites.");
+  }
+
+  // --- Outputs.
+  const vtkIdType n = static_cast<vtkIdType>(result.Pixels.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkIntArray> siteIds;
+  siteIds->SetName("SiteId");
+  vtkNew<vtkDoubleArray> mass, energy;
+  mass->SetName("Mass");
+  energy->SetName("Energy");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->SetPoint(i, result.Sites[3 * i], result.Sites[3 * i + 1], result.Sites[3 * i + 2]);
+    vertices->InsertNextCell(1, &i);
+    siteIds->InsertNextValue(static_cast<int>(i));
+    mass->InsertNextValue(result.Sums.Mass[i]);
+    energy->InsertNextValue(result.Sums.Energy[i]);
+  }
+  sitesOut->SetPoints(points);
+  sitesOut->SetVerts(vertices);
+  sitesOut->GetPointData()->AddArray(siteIds);
+  sitesOut->GetPointData()->AddArray(mass);
+  sitesOut->GetPointData()->AddArray(energy);
+  vtkFieldData* fields = sitesOut->GetFieldData();
+  cvtvtk::AddFieldValue(fields, "Energy", result.Sums.TotalEnergy());
+  cvtvtk::AddFieldValue(
+    fields, "GradientNorm", cvt::TangentialGradientNorm(image, result.Sums, result.Pixels));
+  cvtvtk::AddFieldValue(fields, "Iterations", result.Iterations);
+  cvtvtk::AddFieldValue(fields, "Evaluations", result.Evaluations);
+  cvtvtk::AddFieldValue(fields, "MinimumAreaWeight", minimumWeight);
+  cvtvtk::AddFieldValue(fields, "MaximumAreaWeight", maximumWeight);
+  cvtvtk::AddFieldValue(fields, "SurfaceArea", area);
+  cvtvtk::AddFieldString(fields, "StopReason", result.StopReason);
+
+  labelsOut->ShallowCopy(input);
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("SiteId");
+  labels->SetNumberOfValues(static_cast<vtkIdType>(result.Labels.size()));
+  for (size_t p = 0; p < result.Labels.size(); ++p)
+  {
+    labels->SetValue(static_cast<vtkIdType>(p), result.Labels[p]);
+  }
+  labelsOut->GetPointData()->AddArray(labels);
+
+  vtkNew<vtkCellArray> triangles;
+  for (const auto& t : cvt::DualTriangles(image, result.Labels, result.Sites))
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  remeshOut->SetPoints(points);
+  remeshOut->SetPolys(triangles);
+  vtkNew<vtkIntArray> remeshIds;
+  remeshIds->DeepCopy(siteIds);
+  remeshOut->GetPointData()->AddArray(remeshIds);
+
+  cvtvtk::FillHistoryTable(historyOut, result.History);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "Method: " << (this->Method == LLOYD ? "Lloyd" : "L-BFGS") << "\n";
+  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
+  os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
+}

@@ -1,0 +1,104 @@
+/**
+ * @class   vtkCVTSurfaceFilter
+ * @brief   Constrained centroidal Voronoi tessellation of a surface, on the GPU, and remeshing.
+ *
+ * Input 0 is a geometry image (see vtkCVTGeometryImageSource): a vtkImageData with point
+ * arrays Position (3 components, required), Normal (3; computed when missing), AreaWeight
+ * (computed when missing) and Mask (optional), and field data WrapU/WrapV for identified
+ * borders. Sites are drawn by the area weights (RandomSeed) and optimised on the GPU engine
+ * (vtkCVTSurfaceEngine: 3D-distance jump flooding and reductions) by L-BFGS with tangential
+ * gradients and projection onto the surface (default) or by Lloyd's method with constrained
+ * centroids (Rong et al. 2011, section 4; Liu et al. 2009, section 6).
+ *
+ * Outputs:
+ * 0. sites: 3D vtkPolyData, SiteId, Mass, Energy; field data Energy, GradientNorm (tangential),
+ *    Iterations, Evaluations, StopReason;
+ * 1. labels: the geometry image with an int SiteId array;
+ * 2. remesh: the dual triangulation of the constrained CVT (vertices = sites), oriented like
+ *    the geometry image;
+ * 3. history: vtkTable (iteration, evaluations, energy, gradient_norm, seconds).
+ * Bad input gives a clear error, empty outputs and RequestData returning 0.
+ */
+#ifndef vtkCVTSurfaceFilter_h
+#define vtkCVTSurfaceFilter_h
+
+#include "cvtFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string> // for std::string
+
+class vtkImageData;
+class vtkPolyData;
+class vtkTable;
+
+class CVTFILTERS_EXPORT vtkCVTSurfaceFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkCVTSurfaceFilter* New();
+  vtkTypeMacro(vtkCVTSurfaceFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Methods
+  {
+    LLOYD = 0,
+    LBFGS = 1
+  };
+  enum OutputPorts
+  {
+    SitesPort = 0,
+    LabelsPort = 1,
+    RemeshPort = 2,
+    HistoryPort = 3
+  };
+
+  vtkSetClampMacro(NumberOfSites, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfSites, int);
+  vtkSetMacro(RandomSeed, int);
+  vtkGetMacro(RandomSeed, int);
+  vtkSetClampMacro(Method, int, LLOYD, LBFGS);
+  vtkGetMacro(Method, int);
+  void SetMethodToLloyd() { this->SetMethod(LLOYD); }
+  void SetMethodToLBFGS() { this->SetMethod(LBFGS); }
+  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumNumberOfIterations, int);
+  /** Stop when the relative energy decrease of an iteration falls below this (0: never). */
+  vtkSetClampMacro(Tolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Tolerance, double);
+  /** Stop when |grad F| falls below this fraction of its initial value (0: never). */
+  vtkSetClampMacro(GradientTolerance, double, 0.0, 1.0);
+  vtkGetMacro(GradientTolerance, double);
+  vtkSetClampMacro(NumberOfCorrections, int, 1, 100);
+  vtkGetMacro(NumberOfCorrections, int);
+
+  vtkPolyData* GetSitesOutput();
+  vtkImageData* GetLabelsOutput();
+  vtkPolyData* GetRemeshOutput();
+  vtkTable* GetHistoryOutput();
+
+  const std::string& GetContextDescription() const { return this->ContextDescription; }
+
+protected:
+  vtkCVTSurfaceFilter();
+  ~vtkCVTSurfaceFilter() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int NumberOfSites = 1000;
+  int RandomSeed = 1;
+  int Method = LBFGS;
+  int MaximumNumberOfIterations = 100;
+  double Tolerance = 1e-6;
+  double GradientTolerance = 0.0;
+  int NumberOfCorrections = 7;
+  std::string ContextDescription;
+
+private:
+  vtkCVTSurfaceFilter(const vtkCVTSurfaceFilter&) = delete;
+  void operator=(const vtkCVTSurfaceFilter&) = delete;
+};
+
+#endif

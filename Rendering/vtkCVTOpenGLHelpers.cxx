@@ -1,0 +1,91 @@
+#include "vtkCVTOpenGLHelpers.h"
+
+#include "vtkCVTOpenGLContext.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+namespace cvtgl
+{
+
+ScopedContext::ScopedContext(vtkCVTOpenGLContext* context)
+  : Context(context)
+{
+  this->Context->MakeCurrent();
+}
+
+ScopedContext::~ScopedContext()
+{
+  this->Context->RestorePrevious();
+}
+
+bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
+  int height, int components, const float* data)
+{
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (data)
+  {
+    return texture->Create2DFromRaw(width, height, components, VTK_FLOAT, const_cast<float*>(data));
+  }
+  return texture->Allocate2D(width, height, components, VTK_FLOAT);
+}
+
+bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
+  vtkTextureObject* target0, vtkTextureObject* target1, bool depth)
+{
+  framebuffer->SetContext(window);
+  window->GetState()->PushFramebufferBindings();
+  framebuffer->Bind();
+  framebuffer->AddColorAttachment(0, target0);
+  if (depth)
+  {
+    framebuffer->AddDepthAttachment();
+  }
+  if (target1)
+  {
+    framebuffer->AddColorAttachment(1, target1);
+  }
+  framebuffer->ActivateDrawBuffers(target1 ? 2 : 1);
+  const bool complete = framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
+  window->GetState()->PopFramebufferBindings();
+  return complete;
+}
+
+/// Creates a full-screen quad program on first use and binds it; nullptr if it did not compile.
+vtkShaderProgram* ReadyQuad(
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* window, const char* fragment)
+{
+  if (!quad)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fragment, ""));
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  return quad->Program && quad->Program->GetCompiled() ? quad->Program : nullptr;
+}
+
+/// Reads a float render target back (RGBA or R).
+void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
+  int attachment, int width, int height, unsigned int format, float* out)
+{
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  framebuffer->ActivateReadBuffer(attachment);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, format, GL_FLOAT, out);
+  state->PopFramebufferBindings();
+}
+
+} // namespace cvtgl

@@ -1,0 +1,50 @@
+// Private to CVT::Rendering: small helpers shared by the GPU engines, on VTK's OpenGL classes.
+#ifndef vtkCVTOpenGLHelpers_h
+#define vtkCVTOpenGLHelpers_h
+
+#include <memory>
+
+class vtkCVTOpenGLContext;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+
+namespace cvtgl
+{
+
+/// Makes an engine's context current for the lifetime of the object and gives the thread its
+/// previous context back afterwards, whatever path the caller leaves by.
+class ScopedContext
+{
+public:
+  explicit ScopedContext(vtkCVTOpenGLContext* context);
+  ~ScopedContext();
+  ScopedContext(const ScopedContext&) = delete;
+  ScopedContext& operator=(const ScopedContext&) = delete;
+
+private:
+  vtkCVTOpenGLContext* Context;
+};
+
+/// Makes `texture` a nearest-filtered float texture of the given size and components,
+/// uploading `data` when given.
+bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
+  int height, int components, const float* data = nullptr);
+
+/// Attaches the targets (and a depth buffer when asked) to the framebuffer; false if incomplete.
+bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
+  vtkTextureObject* target0, vtkTextureObject* target1 = nullptr, bool depth = false);
+
+/// Creates a full-screen quad program on first use and binds it; nullptr if it did not compile.
+vtkShaderProgram* ReadyQuad(
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* window, const char* fragment);
+
+/// Reads a float render target back (format GL_RGBA or GL_RED).
+void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
+  int attachment, int width, int height, unsigned int format, float* out);
+
+} // namespace cvtgl
+
+#endif

@@ -1,0 +1,404 @@
+#include "vtkCVTSurfaceEngine.h"
+
+#include "vtkCVTOpenGLContext.h"
+#include "vtkCVTOpenGLHelpers.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkCVTSeedFS.h"
+#include "vtkCVTSurfaceJumpFloodFS.h"
+#include "vtkCVTSurfaceReduceFS.h"
+#include "vtkCVTSurfaceReduceVS.h"
+#include "vtkCVTSurfaceSeedVS.h"
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkCVTSurfaceEngine);
+
+using namespace cvtgl;
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double MillisecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+}
+
+struct vtkCVTSurfaceEngine::Internals
+{
+  vtkNew<vtkTextureObject> Positions; // (x, y, z, valid)
+  vtkNew<vtkTextureObject> Weights;
+  vtkNew<vtkTextureObject> Seeds[2];
+  vtkNew<vtkTextureObject> Sites;
+  vtkNew<vtkTextureObject> Sums;
+  vtkNew<vtkTextureObject> Energy;
+  vtkNew<vtkOpenGLFramebufferObject> SeedsFramebuffer[2];
+  vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
+  vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray;
+  std::unique_ptr<vtkOpenGLQuadHelper> JumpFloodQuad;
+  int CurrentSeeds = 0;
+
+  void Release(vtkOpenGLRenderWindow* window)
+  {
+    for (vtkTextureObject* t : { this->Positions.Get(), this->Weights.Get(), this->Seeds[0].Get(),
+           this->Seeds[1].Get(), this->Sites.Get(), this->Sums.Get(), this->Energy.Get() })
+    {
+      t->ReleaseGraphicsResources(window);
+    }
+    for (vtkOpenGLFramebufferObject* f : { this->SeedsFramebuffer[0].Get(),
+           this->SeedsFramebuffer[1].Get(), this->SumsFramebuffer.Get() })
+    {
+      f->ReleaseGraphicsResources(window);
+    }
+    this->EmptyVertexArray->ReleaseGraphicsResources();
+    if (this->JumpFloodQuad)
+    {
+      this->JumpFloodQuad->ReleaseGraphicsResources(window);
+      this->JumpFloodQuad.reset();
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkCVTSurfaceEngine::vtkCVTSurfaceEngine()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkCVTSurfaceEngine::~vtkCVTSurfaceEngine()
+{
+  this->ReleaseGraphicsResources();
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTSurfaceEngine::ReleaseGraphicsResources()
+{
+  if (this->Context->IsInitialized())
+  {
+    ScopedContext current(this->Context);
+    this->Internal->Release(this->Context->GetRenderWindow());
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkCVTSurfaceEngine::GetContextDescription() const
+{
+  return this->Context->GetDescription();
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::CheckGLError(const char* where)
+{
+  const GLenum error = glGetError();
+  if (error == GL_NO_ERROR)
+  {
+    return true;
+  }
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  std::ostringstream msg;
+  msg << "OpenGL error 0x" << std::hex << error << " during " << where;
+  return this->Fail(msg.str());
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
+{
+  const std::string problem = cvt::CheckGeometryImage(image, 1);
+  if (!problem.empty())
+  {
+    return this->Fail(problem);
+  }
+  if (image.NumberOfPixels() > INT_MAX)
+  {
+    return this->Fail("the geometry image has too many pixels for one draw call");
+  }
+  if (!this->Context->Initialize())
+  {
+    return this->Fail(this->Context->GetLastError());
+  }
+  const int maximumSize = this->Context->GetMaximumTextureSize();
+  if (image.Width > maximumSize || image.Height > maximumSize)
+  {
+    std::ostringstream msg;
+    msg << "the geometry image of " << image.Width << " x " << image.Height
+        << " pixels exceeds this GPU's largest texture (" << maximumSize << " x " << maximumSize
+        << "); use a smaller one";
+    return this->Fail(msg.str());
+  }
+  ScopedContext current(this->Context);
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  Internals& in = *this->Internal;
+  in.Release(window);
+  this->GridSize[0] = image.Width;
+  this->GridSize[1] = image.Height;
+  this->Wrap[0] = image.WrapU ? 1 : 0;
+  this->Wrap[1] = image.WrapV ? 1 : 0;
+  this->NumberOfSites = 0;
+  const size_t pixels = static_cast<size_t>(image.NumberOfPixels());
+  std::vector<float> positions(4 * pixels);
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      positions[4 * p + c] = image.Position[3 * p + c];
+    }
+    positions[4 * p + 3] = image.IsValid(static_cast<long long>(p)) ? 1.0f : 0.0f;
+  }
+  bool ok =
+    AllocateFloatTexture(in.Positions, window, image.Width, image.Height, 4, positions.data()) &&
+    AllocateFloatTexture(in.Weights, window, image.Width, image.Height, 1, image.AreaWeight.data());
+  for (int i = 0; i < 2 && ok; ++i)
+  {
+    ok = AllocateFloatTexture(in.Seeds[i], window, image.Width, image.Height, 4) &&
+      AttachTargets(in.SeedsFramebuffer[i], window, in.Seeds[i], nullptr, true);
+  }
+  if (!ok)
+  {
+    in.Release(window);
+    return this->Fail("the GPU could not allocate the geometry image textures");
+  }
+  return this->CheckGLError("geometry image set-up");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::SetSites(
+  const std::vector<double>& sites, const std::vector<long long>& pixels)
+{
+  if (!this->Internal->Positions->GetHandle())
+  {
+    return this->Fail("SetGeometryImage must succeed before SetSites");
+  }
+  const int n = static_cast<int>(pixels.size());
+  if (n <= 0 || sites.size() != 3 * pixels.size())
+  {
+    return this->Fail("the sites need three coordinates and one pixel each");
+  }
+  const long long total = static_cast<long long>(this->GridSize[0]) * this->GridSize[1];
+  const int slotWidth = static_cast<int>(std::ceil(std::sqrt(double(n))));
+  const int slotHeight = (n + slotWidth - 1) / slotWidth;
+  std::vector<float> texels(static_cast<size_t>(slotWidth) * slotHeight * 4, 0.0f);
+  for (int i = 0; i < n; ++i)
+  {
+    if (pixels[i] < 0 || pixels[i] >= total || pixels[i] >= (1LL << 24))
+    {
+      return this->Fail("a site's pixel lies outside the geometry image");
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      texels[4 * i + c] = static_cast<float>(sites[3 * i + c]);
+    }
+    texels[4 * i + 3] = static_cast<float>(pixels[i]);
+  }
+  ScopedContext current(this->Context);
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  Internals& in = *this->Internal;
+  if (!AllocateFloatTexture(in.Sites, window, slotWidth, slotHeight, 4, texels.data()))
+  {
+    return this->Fail("the GPU could not allocate the site texture");
+  }
+  if (n != this->NumberOfSites || slotWidth != this->SlotSize[0])
+  {
+    if (!AllocateFloatTexture(in.Sums, window, slotWidth, slotHeight, 4) ||
+      !AllocateFloatTexture(in.Energy, window, slotWidth, slotHeight, 1) ||
+      !AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Energy))
+    {
+      return this->Fail("the GPU could not allocate the reduction targets");
+    }
+  }
+  this->NumberOfSites = n;
+  this->SlotSize[0] = slotWidth;
+  this->SlotSize[1] = slotHeight;
+  return this->CheckGLError("site upload");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
+{
+  if (this->NumberOfSites <= 0)
+  {
+    return this->Fail("SetSites must succeed before ComputeCellSums");
+  }
+  ScopedContext current(this->Context);
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  vtkOpenGLState* state = window->GetState();
+  Internals& in = *this->Internal;
+  auto start = Clock::now();
+
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunction(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFunction(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->PushFramebufferBindings();
+
+  // Seed: each site in its pixel, the lowest id winning a shared pixel.
+  vtkShaderProgram* seed =
+    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSurfaceSeedVS, vtkCVTSeedFS, "");
+  vtkShaderProgram* jump =
+    seed ? ReadyQuad(in.JumpFloodQuad, window, vtkCVTSurfaceJumpFloodFS) : nullptr;
+  if (!seed || !jump)
+  {
+    state->PopFramebufferBindings();
+    return this->Fail("the surface labelling shaders did not compile");
+  }
+  window->GetShaderCache()->ReadyShaderProgram(seed);
+  state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
+  in.SeedsFramebuffer[0]->Bind();
+  in.SeedsFramebuffer[0]->ActivateDrawBuffers(1);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, -1.0f);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  in.Sites->Activate();
+  seed->SetUniformi("sites", in.Sites->GetTextureUnit());
+  seed->SetUniform2i("slotSize", this->SlotSize);
+  seed->SetUniform2i("gridSize", this->GridSize);
+  seed->SetUniformi("numberOfSites", this->NumberOfSites);
+  in.EmptyVertexArray->Bind();
+  glDrawArrays(GL_POINTS, 0, this->NumberOfSites);
+  in.EmptyVertexArray->Release();
+  in.Sites->Deactivate();
+  state->vtkglDisable(GL_DEPTH_TEST);
+
+  // 1+JFA with the full initial step.
+  int full = 1;
+  while (full < std::max(this->GridSize[0], this->GridSize[1]))
+  {
+    full *= 2;
+  }
+  std::vector<int> steps{ 1 };
+  for (int step = std::max(1, full / 2); step >= 1; step /= 2)
+  {
+    steps.push_back(step);
+  }
+  window->GetShaderCache()->ReadyShaderProgram(jump);
+  in.Positions->Activate();
+  jump->SetUniformi("positions", in.Positions->GetTextureUnit());
+  jump->SetUniform2i("gridSize", this->GridSize);
+  jump->SetUniform2i("wrap", this->Wrap);
+  int source = 0;
+  for (int step : steps)
+  {
+    const int target = 1 - source;
+    in.SeedsFramebuffer[target]->Bind();
+    in.SeedsFramebuffer[target]->ActivateDrawBuffers(1);
+    in.Seeds[source]->Activate();
+    jump->SetUniformi("seeds", in.Seeds[source]->GetTextureUnit());
+    jump->SetUniformi("stepLength", step);
+    in.JumpFloodQuad->Render();
+    in.Seeds[source]->Deactivate();
+    source = target;
+  }
+  in.CurrentSeeds = source;
+  if (this->MeasureTimings)
+  {
+    glFinish();
+  }
+  this->LastLabelMilliseconds = MillisecondsSince(start);
+  start = Clock::now();
+
+  // Reduction: one point per pixel into its site's slot, both targets summed.
+  vtkShaderProgram* reduce =
+    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSurfaceReduceVS, vtkCVTSurfaceReduceFS, "");
+  if (!reduce)
+  {
+    in.Positions->Deactivate();
+    state->PopFramebufferBindings();
+    return this->Fail("the surface reduction shader did not compile");
+  }
+  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
+  in.SumsFramebuffer->Bind();
+  in.SumsFramebuffer->ActivateDrawBuffers(2);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  in.Seeds[in.CurrentSeeds]->Activate();
+  in.Weights->Activate();
+  reduce->SetUniformi("seeds", in.Seeds[in.CurrentSeeds]->GetTextureUnit());
+  reduce->SetUniformi("positions", in.Positions->GetTextureUnit());
+  reduce->SetUniformi("weights", in.Weights->GetTextureUnit());
+  reduce->SetUniform2i("gridSize", this->GridSize);
+  reduce->SetUniform2i("slotSize", this->SlotSize);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  in.EmptyVertexArray->Bind();
+  glDrawArrays(GL_POINTS, 0, this->GridSize[0] * this->GridSize[1]);
+  in.EmptyVertexArray->Release();
+  in.Weights->Deactivate();
+  in.Seeds[in.CurrentSeeds]->Deactivate();
+  in.Positions->Deactivate();
+  state->PopFramebufferBindings();
+
+  const size_t slots = static_cast<size_t>(this->SlotSize[0]) * this->SlotSize[1];
+  std::vector<float> texels(4 * slots), energy(slots);
+  ReadTarget(
+    in.SumsFramebuffer, window, 0, this->SlotSize[0], this->SlotSize[1], GL_RGBA, texels.data());
+  ReadTarget(
+    in.SumsFramebuffer, window, 1, this->SlotSize[0], this->SlotSize[1], GL_RED, energy.data());
+  sums.Resize(this->NumberOfSites, true);
+  for (int i = 0; i < this->NumberOfSites; ++i)
+  {
+    sums.Mass[i] = texels[4 * i];
+    sums.MomentX[i] = texels[4 * i + 1];
+    sums.MomentY[i] = texels[4 * i + 2];
+    sums.MomentZ[i] = texels[4 * i + 3];
+    sums.Energy[i] = energy[i];
+  }
+  this->LastReductionMilliseconds = MillisecondsSince(start);
+  return this->CheckGLError("surface labelling and reduction");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::GetLabels(std::vector<int>& labels)
+{
+  if (this->NumberOfSites <= 0)
+  {
+    return this->Fail("there is no labelling yet");
+  }
+  ScopedContext current(this->Context);
+  const size_t pixels = static_cast<size_t>(this->GridSize[0]) * this->GridSize[1];
+  std::vector<float> texels(4 * pixels);
+  ReadTarget(this->Internal->SeedsFramebuffer[this->Internal->CurrentSeeds],
+    this->Context->GetRenderWindow(), 0, this->GridSize[0], this->GridSize[1], GL_RGBA,
+    texels.data());
+  labels.resize(pixels);
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    labels[p] = static_cast<int>(texels[4 * p + 3]);
+  }
+  return this->CheckGLError("reading labels back");
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTSurfaceEngine::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Context: " << this->GetContextDescription() << "\n";
+  os << indent << "GeometryImage: " << this->GridSize[0] << " x " << this->GridSize[1] << " (wrap "
+     << this->Wrap[0] << ", " << this->Wrap[1] << ")\n";
+  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
+  os << indent << "MeasureTimings: " << this->MeasureTimings << "\n";
+}

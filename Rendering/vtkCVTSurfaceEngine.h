@@ -1,0 +1,76 @@
+/**
+ * @class   vtkCVTSurfaceEngine
+ * @brief   GPU engine for the constrained CVT on a surface given as a geometry image.
+ *
+ * Implements the cvt::SurfaceEngine seam (Rong et al. 2011, section 4.2): sites are 3D points
+ * held by geometry-image pixels; 1+JFA labels every pixel of the image with the nearest site
+ * by 3D Euclidean distance between stored positions, honouring the identified borders (wrap
+ * flags) and the mask; a regional reduction by additive float blending gives each cell's mass,
+ * moments and energy, weighted by the pixels' area weights. A cell split by the cut into
+ * several parts of the image is summed as one. The optimisers (constrained centroids,
+ * tangential gradients, projection) run on the CPU side of the seam.
+ */
+#ifndef vtkCVTSurfaceEngine_h
+#define vtkCVTSurfaceEngine_h
+
+#include "cvtRenderingModule.h" // for export macro
+#include "cvtSurface.h"         // for cvt::SurfaceEngine
+#include "vtkNew.h"             // for ivars
+#include "vtkObject.h"
+
+#include <memory> // for unique_ptr
+
+class vtkCVTOpenGLContext;
+
+class CVTRENDERING_EXPORT vtkCVTSurfaceEngine
+  : public vtkObject
+  , public cvt::SurfaceEngine
+{
+public:
+  static vtkCVTSurfaceEngine* New();
+  vtkTypeMacro(vtkCVTSurfaceEngine, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** cvt::SurfaceEngine */
+  bool SetGeometryImage(const cvt::GeometryImage& image) override;
+  bool SetSites(const std::vector<double>& sites, const std::vector<long long>& pixels) override;
+  bool ComputeCellSums(cvt::CellSums& sums) override;
+  bool GetLabels(std::vector<int>& labels) override;
+  ///@}
+
+  ///@{
+  /** Wait for the GPU after each phase so that the timings are true (benchmarks). */
+  vtkSetMacro(MeasureTimings, bool);
+  vtkGetMacro(MeasureTimings, bool);
+  ///@}
+  double GetLastLabelMilliseconds() const { return this->LastLabelMilliseconds; }
+  double GetLastReductionMilliseconds() const { return this->LastReductionMilliseconds; }
+
+  std::string GetContextDescription() const;
+  void ReleaseGraphicsResources();
+
+protected:
+  vtkCVTSurfaceEngine();
+  ~vtkCVTSurfaceEngine() override;
+
+private:
+  vtkCVTSurfaceEngine(const vtkCVTSurfaceEngine&) = delete;
+  void operator=(const vtkCVTSurfaceEngine&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+  vtkNew<vtkCVTOpenGLContext> Context;
+
+  bool CheckGLError(const char* where);
+
+  int GridSize[2] = { 0, 0 };
+  int Wrap[2] = { 0, 0 };
+  int SlotSize[2] = { 0, 0 };
+  int NumberOfSites = 0;
+  bool MeasureTimings = false;
+  double LastLabelMilliseconds = 0.0;
+  double LastReductionMilliseconds = 0.0;
+};
+
+#endif

@@ -1,0 +1,306 @@
+// Surfaces through geometry images: area weights, the GPU surface engine against CPU labels and
+// sums, the constrained CVT on a torus, remeshing of a torus and a sphere, bad input.
+#include "cvtSurface.h"
+#include "vtkCVTGeometryImageSource.h"
+#include "vtkCVTSurfaceEngine.h"
+#include "vtkCVTSurfaceFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkParametricEllipsoid.h"
+#include "vtkParametricTorus.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace
+{
+vtkSmartPointer<vtkImageData> Torus(int w, int h)
+{
+  vtkNew<vtkCVTGeometryImageSource> source;
+  source->SetResolution(w, h);
+  source->Update();
+  return source->GetOutput();
+}
+
+cvt::GeometryImage ToGeometryImage(vtkImageData* image)
+{
+  cvt::GeometryImage gi;
+  int dims[3];
+  image->GetDimensions(dims);
+  gi.Width = dims[0];
+  gi.Height = dims[1];
+  gi.WrapU = image->GetFieldData()->GetArray("WrapU")->GetTuple1(0) != 0;
+  gi.WrapV = image->GetFieldData()->GetArray("WrapV")->GetTuple1(0) != 0;
+  for (const char* name : { "Position", "Normal", "AreaWeight" })
+  {
+    vtkDataArray* array = image->GetPointData()->GetArray(name);
+    std::vector<float>& out = std::string(name) == "Position" ? gi.Position
+      : std::string(name) == "Normal"                         ? gi.Normal
+                                                              : gi.AreaWeight;
+    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        out.push_back(static_cast<float>(array->GetComponent(t, c)));
+      }
+    }
+  }
+  return gi;
+}
+
+struct MeshCheck
+{
+  long long Vertices = 0, Edges = 0, Faces = 0;
+  int NonManifoldEdges = 0, MisorientedEdges = 0, DuplicateFaces = 0;
+  long long Euler() const { return this->Vertices - this->Edges + this->Faces; }
+};
+
+MeshCheck CheckMesh(vtkPolyData* mesh)
+{
+  MeshCheck check;
+  std::map<std::pair<vtkIdType, vtkIdType>, int> undirected, directed;
+  std::set<std::set<vtkIdType>> faces;
+  vtkIdType npts;
+  const vtkIdType* ids;
+  for (mesh->GetPolys()->InitTraversal(); mesh->GetPolys()->GetNextCell(npts, ids);)
+  {
+    ++check.Faces;
+    check.DuplicateFaces += faces.insert({ ids[0], ids[1], ids[2] }).second ? 0 : 1;
+    for (int e = 0; e < 3; ++e)
+    {
+      const vtkIdType a = ids[e], b = ids[(e + 1) % 3];
+      ++undirected[{ std::min(a, b), std::max(a, b) }];
+      ++directed[{ a, b }];
+    }
+  }
+  check.Vertices = mesh->GetNumberOfPoints();
+  check.Edges = static_cast<long long>(undirected.size());
+  for (const auto& e : undirected)
+  {
+    check.NonManifoldEdges += e.second != 2 ? 1 : 0;
+  }
+  for (const auto& e : directed)
+  {
+    check.MisorientedEdges += e.second != 1 ? 1 : 0;
+  }
+  return check;
+}
+}
+
+TEST(GeometryImage, TorusAreaWeightsSumToTheArea)
+{
+  auto image = Torus(256, 128);
+  const double area = 4.0 * M_PI * M_PI * 1.0 * 0.4;
+  const double total = image->GetFieldData()->GetArray("TotalArea")->GetTuple1(0);
+  std::cout << "[ measured ] torus area " << total << " (exact " << area << ")\n";
+  EXPECT_NEAR(total, area, 0.005 * area);
+  EXPECT_EQ(image->GetFieldData()->GetArray("WrapU")->GetTuple1(0), 1.0);
+  EXPECT_EQ(image->GetFieldData()->GetArray("WrapV")->GetTuple1(0), 1.0);
+  // The inner ring's pixels are smaller than the outer ring's: (R - r) / (R + r).
+  const double ratio = image->GetFieldData()->GetArray("MinimumAreaWeight")->GetTuple1(0) /
+    image->GetFieldData()->GetArray("MaximumAreaWeight")->GetTuple1(0);
+  EXPECT_NEAR(ratio, 0.6 / 1.4, 0.01);
+}
+
+TEST(SurfaceEngine, LabelsAndSumsMatchTheCpu)
+{
+  // Enough sites that Euclidean cells stay small against the tube radius (few large cells
+  // reach across the hole: Euclidean Voronoi regions disconnected on the surface).
+  const cvt::GeometryImage gi = ToGeometryImage(Torus(128, 64));
+  std::vector<long long> pixels;
+  const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 200, 3, pixels);
+  vtkNew<vtkCVTSurfaceEngine> engine;
+  ASSERT_TRUE(engine->SetGeometryImage(gi)) << engine->GetLastError();
+  ASSERT_TRUE(engine->SetSites(sites, pixels)) << engine->GetLastError();
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine->ComputeCellSums(sums)) << engine->GetLastError();
+  std::vector<int> labels;
+  ASSERT_TRUE(engine->GetLabels(labels));
+
+  // Brute force: the nearest site in 3D of every pixel; and the weighted sums over the GPU's
+  // labels (so that the reduction is checked on its own).
+  cvt::CellSums cpu;
+  cpu.Resize(200, true);
+  int wrong = 0;
+  const auto distance2 = [&](long long p, int s)
+  {
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      d2 += std::pow(gi.Position[3 * p + c] - sites[3 * s + c], 2);
+    }
+    return d2;
+  };
+  for (long long p = 0; p < gi.NumberOfPixels(); ++p)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (int s = 0; s < 200; ++s)
+    {
+      best = std::min(best, distance2(p, s));
+    }
+    const int label = labels[p];
+    ASSERT_GE(label, 0);
+    wrong += distance2(p, label) > best * (1.0 + 1e-5) ? 1 : 0;
+    const double w = gi.AreaWeight[p];
+    const double d[3] = { gi.Position[3 * p] - sites[3 * label],
+      gi.Position[3 * p + 1] - sites[3 * label + 1],
+      gi.Position[3 * p + 2] - sites[3 * label + 2] };
+    cpu.Mass[label] += w;
+    cpu.MomentX[label] += w * d[0];
+    cpu.MomentY[label] += w * d[1];
+    cpu.MomentZ[label] += w * d[2];
+    cpu.Energy[label] += w * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
+  std::cout << "[ measured ] surface 1+JFA: " << wrong << " of " << gi.NumberOfPixels()
+            << " pixels mislabelled\n";
+  EXPECT_LE(wrong, gi.NumberOfPixels() / 200); // under 0.5%
+  for (int s = 0; s < 200; ++s)
+  {
+    EXPECT_NEAR(sums.Mass[s], cpu.Mass[s], 1e-4 * cpu.Mass[s] + 1e-9);
+    EXPECT_NEAR(sums.MomentZ[s], cpu.MomentZ[s], 1e-4 * cpu.Mass[s] + 1e-9);
+    EXPECT_NEAR(sums.Energy[s], cpu.Energy[s], 1e-4 * cpu.Energy[s] + 1e-9);
+  }
+}
+
+TEST(SurfaceFilter, TorusWith600SitesAndItsRemesh)
+{
+  vtkNew<vtkCVTGeometryImageSource> source;
+  source->SetResolution(256, 128);
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(source->GetOutputPort());
+  cvt->SetNumberOfSites(600);
+  cvt->SetMaximumNumberOfIterations(60);
+  cvt->SetTolerance(0.0);
+  int progress = 0;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progress);
+  onProgress->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  cvt->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  cvt->Update();
+  vtkTable* history = cvt->GetHistoryOutput();
+  ASSERT_GT(history->GetNumberOfRows(), 10);
+  const double first = history->GetValueByName(0, "energy").ToDouble();
+  const double last = cvt->GetSitesOutput()->GetFieldData()->GetArray("Energy")->GetTuple1(0);
+  const double firstGradient = history->GetValueByName(0, "gradient_norm").ToDouble();
+  const double lastGradient =
+    cvt->GetSitesOutput()->GetFieldData()->GetArray("GradientNorm")->GetTuple1(0);
+  std::cout << "[ measured ] torus, 600 sites: energy " << first << " -> " << last << ", |grad F| "
+            << firstGradient << " -> " << lastGradient << "\n";
+  // Random sites have energy A^2 / (pi n), a hexagonal CVT 0.1604 A^2 / n: at most a 49.6% fall.
+  EXPECT_LT(last, 0.55 * first);
+  EXPECT_LT(lastGradient, 0.2 * firstGradient);
+  EXPECT_GT(progress, 10);
+
+  vtkPolyData* sites = cvt->GetSitesOutput();
+  ASSERT_EQ(sites->GetNumberOfPoints(), 600);
+  for (vtkIdType i = 0; i < 600; ++i)
+  {
+    // On the torus: distance to the ring circle is r.
+    double p[3];
+    sites->GetPoint(i, p);
+    const double ring = std::hypot(p[0], p[1]) - 1.0;
+    EXPECT_NEAR(std::hypot(ring, p[2]), 0.4, 0.01);
+  }
+  const MeshCheck mesh = CheckMesh(cvt->GetRemeshOutput());
+  EXPECT_EQ(mesh.Vertices, 600);
+  EXPECT_EQ(mesh.NonManifoldEdges, 0);
+  EXPECT_EQ(mesh.MisorientedEdges, 0);
+  EXPECT_EQ(mesh.DuplicateFaces, 0);
+  EXPECT_EQ(mesh.Euler(), 0);
+  EXPECT_EQ(
+    cvt->GetLabelsOutput()->GetPointData()->GetArray("SiteId")->GetNumberOfTuples(), 256 * 128);
+}
+
+TEST(SurfaceFilter, SphereRemeshIsClosedWithEulerCharacteristicTwo)
+{
+  vtkNew<vtkCVTGeometryImageSource> source;
+  vtkNew<vtkParametricEllipsoid> sphere; // cut open along a meridian, poles at two rows
+  source->SetParametricFunction(sphere);
+  source->SetResolution(128, 64);
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(source->GetOutputPort());
+  cvt->SetNumberOfSites(150);
+  cvt->SetMaximumNumberOfIterations(40);
+  cvt->SetMethodToLloyd();
+  cvt->Update();
+  const MeshCheck mesh = CheckMesh(cvt->GetRemeshOutput());
+  EXPECT_EQ(mesh.Vertices, 150);
+  EXPECT_EQ(mesh.NonManifoldEdges, 0);
+  EXPECT_EQ(mesh.MisorientedEdges, 0);
+  EXPECT_EQ(mesh.Euler(), 2);
+}
+
+namespace
+{
+class ErrorCatcher : public vtkCommand
+{
+public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Message += static_cast<const char*>(data);
+  }
+  std::string Message;
+};
+
+std::string FailWith(vtkImageData* image, int sites = 10)
+{
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  vtkNew<ErrorCatcher> catcher;
+  cvt->AddObserver(vtkCommand::ErrorEvent, catcher);
+  cvt->SetInputData(image);
+  cvt->SetNumberOfSites(sites);
+  cvt->Update();
+  EXPECT_EQ(cvt->GetSitesOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(cvt->GetRemeshOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(cvt->GetHistoryOutput()->GetNumberOfRows(), 0);
+  EXPECT_FALSE(catcher->Message.empty());
+  return catcher->Message;
+}
+}
+
+TEST(SurfaceFilterBadInput, EveryBadGeometryImageSaysWhatToFix)
+{
+  vtkNew<vtkImageData> empty;
+  EXPECT_NE(FailWith(empty).find("empty"), std::string::npos);
+
+  vtkNew<vtkImageData> noPositions;
+  noPositions->SetDimensions(8, 8, 1);
+  EXPECT_NE(FailWith(noPositions).find("'Position'"), std::string::npos);
+
+  auto nan = Torus(16, 8);
+  vtkFloatArray::SafeDownCast(nan->GetPointData()->GetArray("Position"))
+    ->SetComponent(5, 1, std::numeric_limits<float>::quiet_NaN());
+  EXPECT_NE(FailWith(nan).find("not finite"), std::string::npos);
+
+  auto masked = Torus(16, 8);
+  vtkUnsignedCharArray* mask =
+    vtkUnsignedCharArray::SafeDownCast(masked->GetPointData()->GetArray("Mask"));
+  for (vtkIdType p = 5; p < mask->GetNumberOfTuples(); ++p)
+  {
+    mask->SetValue(p, 0);
+  }
+  EXPECT_NE(FailWith(masked).find("mask leaves 5 pixels"), std::string::npos);
+
+  EXPECT_NE(FailWith(Torus(16, 8), 0).find("at least one"), std::string::npos);
+
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(4, 4, 4);
+  EXPECT_NE(FailWith(volume).find("3D"), std::string::npos);
+}
