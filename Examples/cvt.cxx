@@ -1,12 +1,15 @@
 // cvt: centroidal Voronoi tessellations on the GPU from the command line.
 //   cvt image [options]     CVT of a 2D image domain (density from an image, or uniform)
-//   cvt surface [options]   CVT on a surface (not available yet)
+//   cvt surface [options]   constrained CVT on a surface (a torus) and its remesh
 // Run `cvt --help` for the options. Errors go to stderr with exit status 1 (2 for usage).
+#include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTImageFilter.h"
 #include "vtkCVTSceneRenderer.h"
+#include "vtkCVTSurfaceFilter.h"
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageReader2.h"
@@ -15,6 +18,7 @@
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkParametricTorus.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -40,9 +44,10 @@
 namespace
 {
 const char* Usage = R"(usage: cvt image [options]
-       cvt surface [options]      (not available yet)
+       cvt surface [options]
 
-Computes a centroidal Voronoi tessellation (CVT) on the GPU (headless: EGL, no display needed).
+Computes a centroidal Voronoi tessellation (CVT) on the GPU (headless: EGL, no display needed):
+of a 2D image domain (image), or a constrained CVT of a surface with its remesh (surface).
 
 Input:
   --input FILE            density image: .png .jpg .jpeg .vti .mha .mhd (default: none, a
@@ -53,6 +58,10 @@ Input:
                           physical extent of the image domain (default: the image's own
                           geometry; with no --input, [-1,1]^2)
   --resolution N          grid size when there is no --input (default 512)
+Surface (cvt surface):
+  --torus R r             a torus of ring radius R and tube radius r (default 1 0.4)
+  --gi-resolution W H     geometry image size (default 1024 512)
+  --input MESH            a triangle mesh (not available yet: needs a parameterisation)
 Sites:
   --sites N               number of sites (default 1000)
   --initial-sites FILE    CSV of initial sites, one "x,y" per line (overrides --sites)
@@ -64,11 +73,12 @@ Optimiser:
                           when no pixel changes site); 0 runs every iteration (default 1e-6)
   --gradient-tolerance G  stop when |grad F| falls below G times its initial value (default 0)
   --corrections M         L-BFGS corrections kept (default 7)
-  --report                print energy, |grad F|, the GPU energy against the exact CPU energy
-                          of the result, and quality measures (Rong et al. Table 6)
+  --report                image: energy, |grad F|, the GPU energy against the exact CPU energy
+                          of the result, quality measures (Rong et al. Table 6); surface:
+                          energy, |grad F|, remesh valence and angle histograms
 Output:
-  --output DIR            writes sites.vtp, sites.csv, labels.vti, dual.vtp, history.csv and
-                          cvt.png there (default: ./cvt-output)
+  --output DIR            writes sites.vtp, sites.csv, labels.vti, dual.vtp (image) or
+                          remesh.vtp (surface), history.csv and cvt.png (default: ./cvt-output)
   --quiet                 print nothing but errors
   --help                  this text
 )";
@@ -82,6 +92,9 @@ struct Options
   double GradientTolerance = 0.0;
   double Domain[4] = { -1.0, 1.0, -1.0, 1.0 };
   int Resolution = 512, Sites = 1000, Iterations = 100;
+  double Torus[2] = { 1.0, 0.4 };
+  int GIResolution[2] = { 1024, 512 };
+  bool HaveTorus = false, HaveImageOption = false;
   long long Seed = 1;
   double Tolerance = 1e-6;
 };
@@ -126,13 +139,11 @@ Options ParseArguments(int argc, char* argv[])
     std::exit(args.empty() ? 2 : 0);
   }
   options.Command = args[0];
-  if (options.Command == "surface")
+  if (options.Command != "image" && options.Command != "surface")
   {
-    Fail("'cvt surface' is not available yet; only 'cvt image' is", 2);
-  }
-  if (options.Command != "image")
-  {
-    Fail("unknown command '" + options.Command + "'; use 'cvt image' (see cvt --help)", 2);
+    Fail("unknown command '" + options.Command +
+        "'; use 'cvt image' or 'cvt surface' (see cvt --help)",
+      2);
   }
   for (size_t k = 1; k < args.size(); ++k)
   {
@@ -153,9 +164,45 @@ Options ParseArguments(int argc, char* argv[])
     else if (a == "--input")
       options.Input = value();
     else if (a == "--array")
+    {
       options.Array = value();
+      options.HaveImageOption = true;
+    }
     else if (a == "--invert")
+    {
       options.Invert = true;
+      options.HaveImageOption = true;
+    }
+    else if (a == "--torus")
+    {
+      if (k + 2 > args.size() - 1)
+      {
+        Fail("--torus needs 2 values: R r", 2);
+      }
+      options.Torus[0] = ParseNumber(a, args[++k].c_str());
+      options.Torus[1] = ParseNumber(a, args[++k].c_str());
+      options.HaveTorus = true;
+      if (!(options.Torus[0] > 0.0) || !(options.Torus[1] > 0.0) ||
+        !(options.Torus[1] < options.Torus[0]))
+      {
+        Fail("--torus needs 0 < r < R", 2);
+      }
+    }
+    else if (a == "--gi-resolution")
+    {
+      if (k + 2 > args.size() - 1)
+      {
+        Fail("--gi-resolution needs 2 values: W H", 2);
+      }
+      for (int& r : options.GIResolution)
+      {
+        r = static_cast<int>(ParseInteger(a, args[++k].c_str()));
+        if (r < 2 || r > 65536)
+        {
+          Fail("--gi-resolution needs sizes between 2 and 65536", 2);
+        }
+      }
+    }
     else if (a == "--quiet")
       options.Quiet = true;
     else if (a == "--report")
@@ -175,17 +222,24 @@ Options ParseArguments(int argc, char* argv[])
         d = ParseNumber(a, args[++k].c_str());
       }
       options.HaveDomain = true;
+      options.HaveImageOption = true;
       if (!(options.Domain[1] > options.Domain[0]) || !(options.Domain[3] > options.Domain[2]))
       {
         Fail("--domain needs XMIN < XMAX and YMIN < YMAX", 2);
       }
     }
     else if (a == "--resolution")
+    {
       options.Resolution = static_cast<int>(ParseInteger(a, value()));
+      options.HaveImageOption = true;
+    }
     else if (a == "--sites")
       options.Sites = static_cast<int>(ParseInteger(a, value()));
     else if (a == "--initial-sites")
+    {
       options.InitialSites = value();
+      options.HaveImageOption = true;
+    }
     else if (a == "--seed")
       options.Seed = ParseInteger(a, value());
     else if (a == "--method")
@@ -198,6 +252,21 @@ Options ParseArguments(int argc, char* argv[])
       options.Output = value();
     else
       Fail("unknown option '" + a + "' (see cvt --help)", 2);
+  }
+  if (options.Command == "surface" && options.HaveImageOption)
+  {
+    Fail("--array, --invert, --domain, --resolution and --initial-sites are options of "
+         "'cvt image', not of 'cvt surface'",
+      2);
+  }
+  if (options.Command == "image" && options.HaveTorus)
+  {
+    Fail("--torus is an option of 'cvt surface'", 2);
+  }
+  if (options.Command == "surface" && !options.Input.empty())
+  {
+    Fail("'cvt surface --input MESH' is not available yet: meshes need a parameterisation onto "
+         "a geometry image; use --torus R r");
   }
   if (options.Method != "lloyd" && options.Method != "lbfgs")
   {
@@ -400,13 +469,127 @@ void Write(vtkDataObject* data, const std::string& path)
     Fail("cannot write '" + path + "'");
   }
 }
+
+/// Keeps a filter's last error message, so that the program can fail with it.
+class ErrorObserver : public vtkCommand
+{
+public:
+  static ErrorObserver* New() { return new ErrorObserver; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Message = static_cast<const char*>(data);
+  }
+  std::string Message;
+};
+
+/// Runs the filter; fails with its error message when it produced no sites.
+void Run(vtkAlgorithm* filter, vtkPolyData* (*sites)(vtkAlgorithm*))
+{
+  vtkNew<ErrorObserver> errors;
+  filter->AddObserver(vtkCommand::ErrorEvent, errors);
+  filter->Update();
+  if (!errors->Message.empty() || sites(filter)->GetNumberOfPoints() == 0)
+  {
+    Fail(errors->Message.empty() ? "the CVT produced no sites" : errors->Message);
+  }
 }
 
-int main(int argc, char* argv[])
+std::string OutputFolder(const Options& options)
 {
-  const Options options = ParseArguments(argc, argv);
-  vtkSmartPointer<vtkImageData> image = ReadDensityImage(options);
+  if (mkdir(options.Output.c_str(), 0777) != 0 && errno != EEXIST)
+  {
+    Fail("cannot create --output directory '" + options.Output + "'");
+  }
+  return options.Output + "/";
+}
 
+/// sites.csv (x,y or x,y,z per line: the --initial-sites format) and history.csv.
+void WriteCsv(vtkPolyData* sites, vtkTable* history, int dimensions, const std::string& dir)
+{
+  std::ofstream csv(dir + "sites.csv");
+  csv << std::setprecision(17);
+  for (vtkIdType i = 0; i < sites->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    sites->GetPoint(i, p);
+    csv << p[0] << "," << p[1];
+    if (dimensions == 3)
+    {
+      csv << "," << p[2];
+    }
+    csv << "\n";
+  }
+  std::ofstream out(dir + "history.csv");
+  out << "iteration,evaluations,energy,gradient_norm,seconds\n" << std::setprecision(12);
+  for (vtkIdType r = 0; r < history->GetNumberOfRows(); ++r)
+  {
+    out << history->GetValueByName(r, "iteration").ToInt() << ","
+        << history->GetValueByName(r, "evaluations").ToInt() << ","
+        << history->GetValueByName(r, "energy").ToDouble() << ","
+        << history->GetValueByName(r, "gradient_norm").ToDouble() << ","
+        << history->GetValueByName(r, "seconds").ToDouble() << "\n";
+  }
+  if (!csv || !out)
+  {
+    Fail("cannot write the CSV files in '" + dir + "'");
+  }
+}
+
+void WritePicture(vtkImageData* picture, const std::string& error, const std::string& path)
+{
+  if (!picture)
+  {
+    Fail("cannot render cvt.png: " + error);
+  }
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputData(picture);
+  png->SetFileName(path.c_str());
+  png->Write();
+}
+
+double Field(vtkDataObject* data, const char* name)
+{
+  return data->GetFieldData()->GetArray(name)->GetTuple1(0);
+}
+
+void PrintSummary(
+  const Options& options, vtkPolyData* sites, const std::string& context, const char* files)
+{
+  if (options.Quiet)
+  {
+    return;
+  }
+  std::cout << "cvt " << options.Command << ": " << sites->GetNumberOfPoints() << " sites, "
+            << Field(sites, "Iterations") << " iterations ("
+            << sites->GetFieldData()->GetAbstractArray("StopReason")->GetVariantValue(0).ToString()
+            << "), energy " << std::setprecision(8) << Field(sites, "Energy") << ", |grad F| "
+            << Field(sites, "GradientNorm") << "\n"
+            << "  OpenGL: " << context << "\n"
+            << "  wrote " << files << " in " << options.Output << "\n";
+}
+
+template<typename Filter>
+void SetOptimizer(const Options& options, Filter* filter)
+{
+  filter->SetNumberOfSites(options.Sites);
+  filter->SetRandomSeed(static_cast<int>(options.Seed));
+  filter->SetMaximumNumberOfIterations(options.Iterations);
+  filter->SetTolerance(options.Tolerance);
+  filter->SetGradientTolerance(options.GradientTolerance);
+  filter->SetNumberOfCorrections(options.Corrections);
+  if (options.Method == "lloyd")
+  {
+    filter->SetMethodToLloyd();
+  }
+  else
+  {
+    filter->SetMethodToLBFGS();
+  }
+}
+
+int RunImage(const Options& options)
+{
+  vtkSmartPointer<vtkImageData> image = ReadDensityImage(options);
   vtkNew<vtkCVTImageFilter> cvt;
   cvt->SetInputData(image);
   if (image->GetPointData()->GetArray("density"))
@@ -417,115 +600,112 @@ int main(int argc, char* argv[])
   {
     cvt->SetInitialSitesData(ReadSitesCsv(options.InitialSites));
   }
-  cvt->SetNumberOfSites(options.Sites);
-  cvt->SetRandomSeed(static_cast<int>(options.Seed));
-  cvt->SetMaximumNumberOfIterations(options.Iterations);
-  cvt->SetTolerance(options.Tolerance);
-  cvt->SetGradientTolerance(options.GradientTolerance);
-  cvt->SetNumberOfCorrections(options.Corrections);
-  if (options.Method == "lloyd")
-  {
-    cvt->SetMethodToLloyd();
-  }
-  else
-  {
-    cvt->SetMethodToLBFGS();
-  }
+  SetOptimizer(options, cvt.Get());
   cvt->SetComputeExactEnergy(options.Report);
+  Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTImageFilter*>(f)->GetSitesOutput(); });
 
-  // Filter errors go to stderr through VTK's output window; keep them and fail cleanly.
-  struct ErrorObserver : vtkCommand
-  {
-    static ErrorObserver* New() { return new ErrorObserver; }
-    void Execute(vtkObject*, unsigned long, void* data) override
-    {
-      this->Message = static_cast<const char*>(data);
-    }
-    std::string Message;
-  };
-  vtkNew<ErrorObserver> errors;
-  cvt->AddObserver(vtkCommand::ErrorEvent, errors);
-  cvt->Update();
-  if (!errors->Message.empty() || cvt->GetSitesOutput()->GetNumberOfPoints() == 0)
-  {
-    std::string message = errors->Message.empty() ? "the CVT produced no sites" : errors->Message;
-    Fail(message);
-  }
-
-  if (mkdir(options.Output.c_str(), 0777) != 0 && errno != EEXIST)
-  {
-    Fail("cannot create --output directory '" + options.Output + "'");
-  }
-  const std::string dir = options.Output + "/";
+  const std::string dir = OutputFolder(options);
   vtkPolyData* sites = cvt->GetSitesOutput();
   Write<vtkXMLPolyDataWriter>(sites, dir + "sites.vtp");
   Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), dir + "labels.vti");
   Write<vtkXMLPolyDataWriter>(cvt->GetDualOutput(), dir + "dual.vtp");
-  {
-    std::ofstream csv(dir + "sites.csv");
-    csv << std::setprecision(17);
-    for (vtkIdType i = 0; i < sites->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      sites->GetPoint(i, p);
-      csv << p[0] << "," << p[1] << "\n";
-    }
-    vtkTable* history = cvt->GetHistoryOutput();
-    std::ofstream out(dir + "history.csv");
-    out << "iteration,evaluations,energy,gradient_norm,seconds\n" << std::setprecision(12);
-    for (vtkIdType r = 0; r < history->GetNumberOfRows(); ++r)
-    {
-      out << history->GetValueByName(r, "iteration").ToInt() << ","
-          << history->GetValueByName(r, "evaluations").ToInt() << ","
-          << history->GetValueByName(r, "energy").ToDouble() << ","
-          << history->GetValueByName(r, "gradient_norm").ToDouble() << ","
-          << history->GetValueByName(r, "seconds").ToDouble() << "\n";
-    }
-    if (!csv || !out)
-    {
-      Fail("cannot write the CSV files in '" + options.Output + "'");
-    }
-  }
+  WriteCsv(sites, cvt->GetHistoryOutput(), 2, dir);
   vtkNew<vtkCVTSceneRenderer> scene;
-  vtkSmartPointer<vtkImageData> picture = scene->Render(cvt->GetLabelsOutput(), sites);
-  if (!picture)
-  {
-    Fail("cannot render cvt.png: " + scene->GetLastError());
-  }
-  vtkNew<vtkPNGWriter> png;
-  png->SetInputData(picture);
-  png->SetFileName((dir + "cvt.png").c_str());
-  png->Write();
+  WritePicture(
+    scene->Render(cvt->GetLabelsOutput(), sites), scene->GetLastError(), dir + "cvt.png");
 
-  vtkFieldData* fields = sites->GetFieldData();
-  const auto field = [fields](const char* name) { return fields->GetArray(name)->GetTuple1(0); };
   if (options.Report)
   {
     std::cout << std::setprecision(6) << "report:\n"
               << "  method                      " << options.Method << "\n"
-              << "  iterations / evaluations    " << field("Iterations") << " / "
-              << field("Evaluations") << "\n"
-              << "  energy F (GPU)              " << field("Energy") << "\n"
-              << "  energy F (exact, CPU)       " << field("ExactEnergy") << "\n"
-              << "  relative difference         " << 100.0 * field("EnergyRelativeDifference")
+              << "  iterations / evaluations    " << Field(sites, "Iterations") << " / "
+              << Field(sites, "Evaluations") << "\n"
+              << "  energy F (GPU)              " << Field(sites, "Energy") << "\n"
+              << "  energy F (exact, CPU)       " << Field(sites, "ExactEnergy") << "\n"
+              << "  relative difference         "
+              << 100.0 * Field(sites, "EnergyRelativeDifference") << " %\n"
+              << "  |grad F|                    " << Field(sites, "GradientNorm") << "\n"
+              << "  hexagonal interior cells    " << 100.0 * Field(sites, "HexagonalFraction")
               << " %\n"
-              << "  |grad F|                    " << field("GradientNorm") << "\n"
-              << "  hexagonal interior cells    " << 100.0 * field("HexagonalFraction") << " %\n"
-              << "  stdev cell radius r_i       " << field("RadiusStandardDeviation") << "\n"
-              << "  stdev nearest neighbour d_i " << field("NearestNeighborStandardDeviation")
-              << "\n"
-              << "  stdev cell area a_i         " << field("AreaStandardDeviation") << "\n";
+              << "  stdev cell radius r_i       " << Field(sites, "RadiusStandardDeviation") << "\n"
+              << "  stdev nearest neighbour d_i "
+              << Field(sites, "NearestNeighborStandardDeviation") << "\n"
+              << "  stdev cell area a_i         " << Field(sites, "AreaStandardDeviation") << "\n";
   }
-  if (!options.Quiet)
-  {
-    std::cout << "cvt image: " << sites->GetNumberOfPoints() << " sites, "
-              << fields->GetArray("Iterations")->GetTuple1(0) << " iterations ("
-              << fields->GetAbstractArray("StopReason")->GetVariantValue(0).ToString()
-              << "), energy " << std::setprecision(8) << field("Energy") << ", |grad F| "
-              << field("GradientNorm") << "\n"
-              << "  OpenGL: " << cvt->GetContextDescription() << "\n"
-              << "  wrote sites.vtp sites.csv labels.vti dual.vtp history.csv cvt.png in "
-              << options.Output << "\n";
-  }
+  PrintSummary(options, sites, cvt->GetContextDescription(),
+    "sites.vtp sites.csv labels.vti dual.vtp history.csv cvt.png");
   return 0;
+}
+
+int RunSurface(const Options& options)
+{
+  vtkNew<vtkParametricTorus> torus;
+  torus->SetRingRadius(options.Torus[0]);
+  torus->SetCrossSectionRadius(options.Torus[1]);
+  vtkNew<vtkCVTGeometryImageSource> geometryImage;
+  geometryImage->SetParametricFunction(torus);
+  geometryImage->SetResolution(options.GIResolution[0], options.GIResolution[1]);
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(geometryImage->GetOutputPort());
+  SetOptimizer(options, cvt.Get());
+  Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTSurfaceFilter*>(f)->GetSitesOutput(); });
+
+  const std::string dir = OutputFolder(options);
+  vtkPolyData* sites = cvt->GetSitesOutput();
+  vtkPolyData* remesh = cvt->GetRemeshOutput();
+  Write<vtkXMLPolyDataWriter>(sites, dir + "sites.vtp");
+  Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), dir + "labels.vti");
+  Write<vtkXMLPolyDataWriter>(remesh, dir + "remesh.vtp");
+  WriteCsv(sites, cvt->GetHistoryOutput(), 3, dir);
+  vtkNew<vtkCVTSceneRenderer> scene;
+  WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), dir + "cvt.png");
+
+  if (options.Report)
+  {
+    vtkFieldData* mesh = remesh->GetFieldData();
+    std::cout << std::setprecision(6) << "report:\n"
+              << "  method                      " << options.Method << "\n"
+              << "  iterations / evaluations    " << Field(sites, "Iterations") << " / "
+              << Field(sites, "Evaluations") << "\n"
+              << "  energy F (GPU)              " << Field(sites, "Energy") << "\n"
+              << "  |grad F| (tangential)       " << Field(sites, "GradientNorm") << "\n"
+              << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
+              << "  area weights min / max      " << Field(sites, "MinimumAreaWeight") << " / "
+              << Field(sites, "MaximumAreaWeight") << "\n"
+              << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
+              << remesh->GetNumberOfPolys() << " triangles\n"
+              << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
+              << " %\n"
+              << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
+              << Field(remesh, "MaximumAngle") << " degrees\n"
+              << "  valence histogram          ";
+    vtkDataArray* valence = mesh->GetArray("ValenceHistogram");
+    for (vtkIdType v = 0; v < valence->GetNumberOfTuples(); ++v)
+    {
+      if (valence->GetTuple1(v) > 0)
+      {
+        std::cout << " " << v << ":" << valence->GetTuple1(v);
+      }
+    }
+    std::cout << "\n  angle histogram (10 deg)   ";
+    vtkDataArray* angles = mesh->GetArray("AngleHistogram");
+    for (vtkIdType b = 0; b < angles->GetNumberOfTuples(); ++b)
+    {
+      if (angles->GetTuple1(b) > 0)
+      {
+        std::cout << " " << 10 * b << "-" << 10 * (b + 1) << ":" << angles->GetTuple1(b);
+      }
+    }
+    std::cout << "\n";
+  }
+  PrintSummary(options, sites, cvt->GetContextDescription(),
+    "sites.vtp sites.csv labels.vti remesh.vtp history.csv cvt.png");
+  return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const Options options = ParseArguments(argc, argv);
+  return options.Command == "surface" ? RunSurface(options) : RunImage(options);
 }

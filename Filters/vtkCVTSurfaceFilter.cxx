@@ -1,5 +1,6 @@
 #include "vtkCVTSurfaceFilter.h"
 
+#include "cvtQuality.h"
 #include "cvtSurface.h"
 #include "cvtSurfaceOptimizer.h"
 #include "vtkCVTOutputHelpers.h"
@@ -321,14 +322,32 @@ int vtkCVTSurfaceFilter::RequestData(
   }
   labelsOut->GetPointData()->AddArray(labels);
 
+  const std::vector<std::array<int, 3>> dual =
+    cvt::DualTriangles(image, result.Labels, result.Sites);
   vtkNew<vtkCellArray> triangles;
-  for (const auto& t : cvt::DualTriangles(image, result.Labels, result.Sites))
+  for (const auto& t : dual)
   {
     const vtkIdType ids[3] = { t[0], t[1], t[2] };
     triangles->InsertNextCell(3, ids);
   }
   remeshOut->SetPoints(points);
   remeshOut->SetPolys(triangles);
+  const cvt::MeshQuality quality = cvt::MeasureMesh(result.Sites, dual);
+  vtkFieldData* remeshFields = remeshOut->GetFieldData();
+  cvtvtk::AddFieldValue(remeshFields, "Valence6Fraction", quality.Valence6Fraction);
+  cvtvtk::AddFieldValue(remeshFields, "MinimumAngle", quality.MinimumAngle);
+  cvtvtk::AddFieldValue(remeshFields, "MaximumAngle", quality.MaximumAngle);
+  for (const auto& histogram : { std::make_pair("ValenceHistogram", &quality.ValenceHistogram),
+         std::make_pair("AngleHistogram", &quality.AngleHistogram) })
+  {
+    vtkNew<vtkIntArray> counts;
+    counts->SetName(histogram.first);
+    for (int count : *histogram.second)
+    {
+      counts->InsertNextValue(count);
+    }
+    remeshFields->AddArray(counts);
+  }
   vtkNew<vtkIntArray> remeshIds;
   remeshIds->DeepCopy(siteIds);
   remeshOut->GetPointData()->AddArray(remeshIds);

@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCamera.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
@@ -41,7 +42,6 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
     return nullptr;
   }
   context->MakeCurrent();
-  vtkOpenGLRenderWindow* window = context->GetRenderWindow();
 
   double bounds[6];
   labels->GetBounds(bounds);
@@ -56,7 +56,6 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
   const int sizeY = width >= height
     ? std::max(16, static_cast<int>(std::lround(this->Size * height / width)))
     : this->Size;
-  window->SetSize(sizeX, sizeY);
 
   // Pastel colours from a fixed seed: the same result always gives the same picture.
   double range[2];
@@ -103,7 +102,6 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
     siteActor->SetPosition(0.0, 0.0, 1e-3 * std::max(width, height)); // in front of the cells
     renderer->AddActor(siteActor);
   }
-  window->AddRenderer(renderer);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->ParallelProjectionOn();
   const double cx = 0.5 * (bounds[0] + bounds[1]), cy = 0.5 * (bounds[2] + bounds[3]);
@@ -113,18 +111,83 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
   camera->SetParallelScale(0.5 * height);
   renderer->ResetCameraClippingRange();
 
+  return this->Snapshot(context, renderer, sizeX, sizeY);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Snapshot(
+  vtkCVTOpenGLContext* context, vtkRenderer* renderer, int width, int height)
+{
+  vtkOpenGLRenderWindow* window = context->GetRenderWindow();
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
   window->Render();
   vtkNew<vtkUnsignedCharArray> pixels;
-  window->GetPixelData(0, 0, sizeX - 1, sizeY - 1, 0, pixels, 0);
+  window->GetPixelData(0, 0, width - 1, height - 1, 0, pixels, 0);
   window->RemoveRenderer(renderer);
   renderer->ReleaseGraphicsResources(window);
   context->RestorePrevious();
 
   auto picture = vtkSmartPointer<vtkImageData>::New();
-  picture->SetDimensions(sizeX, sizeY, 1);
+  picture->SetDimensions(width, height, 1);
   pixels->SetName("RGB");
   picture->GetPointData()->SetScalars(pixels);
   return picture;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
+{
+  this->LastError.clear();
+  if (!mesh || mesh->GetNumberOfPolys() == 0)
+  {
+    this->LastError = "the mesh has no triangles";
+    return nullptr;
+  }
+  vtkNew<vtkCVTOpenGLContext> context;
+  if (!context->Initialize())
+  {
+    this->LastError = context->GetLastError();
+    return nullptr;
+  }
+  context->MakeCurrent();
+
+  // One pastel colour per triangle, from a fixed seed.
+  vtkNew<vtkPolyData> coloured;
+  coloured->ShallowCopy(mesh);
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("Colour");
+  colours->SetNumberOfComponents(3);
+  std::mt19937 rng(12345);
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    colours->InsertNextTuple3(90 + rng() % 150, 90 + rng() % 150, 90 + rng() % 150);
+  }
+  coloured->GetCellData()->SetScalars(colours);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(coloured);
+  mapper->SetScalarModeToUseCellData();
+  mapper->SetColorModeToDirectScalars();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->EdgeVisibilityOn();
+  actor->GetProperty()->SetEdgeColor(0.1, 0.1, 0.1);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  renderer->AddActor(actor);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const double cx = 0.5 * (bounds[0] + bounds[1]), cy = 0.5 * (bounds[2] + bounds[3]),
+               cz = 0.5 * (bounds[4] + bounds[5]);
+  camera->SetFocalPoint(cx, cy, cz);
+  camera->SetPosition(
+    cx, cy - 2.0 * (bounds[3] - bounds[2]), cz + 2.0 * (bounds[5] - bounds[4]) + 1.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera();
+  camera->Zoom(1.5);
+  return this->Snapshot(context, renderer, this->Size, (this->Size * 3) / 4);
 }
 
 //------------------------------------------------------------------------------

@@ -15,8 +15,10 @@
 
 #include <string> // for std::string
 
+class vtkCVTOpenGLContext;
 class vtkImageData;
 class vtkPolyData;
+class vtkRenderer;
 
 class CVTRENDERING_EXPORT vtkCVTSceneRenderer : public vtkObject
 {
@@ -49,6 +51,12 @@ public:
    * RGB image. Returns nullptr with a message in GetLastError() when there is no context.
    */
   vtkSmartPointer<vtkImageData> Render(vtkImageData* labels, vtkPolyData* sites);
+
+  /**
+   * Render a surface mesh (a remesh) seen from above at an angle, each triangle in its own
+   * colour with its edges drawn, into an RGB image. nullptr when there is no context.
+   */
+  vtkSmartPointer<vtkImageData> RenderMesh(vtkPolyData* mesh);
   const std::string& GetLastError() const { return this->LastError; }
 
 protected:
@@ -57,6 +65,9 @@ protected:
 
 private:
   vtkCVTSceneRenderer(const vtkCVTSceneRenderer&) = delete;
+  /** Renders the renderer's props in the headless window and reads the pixels back. */
+  vtkSmartPointer<vtkImageData> Snapshot(
+    vtkCVTOpenGLContext* context, vtkRenderer* renderer, int width, int height);
   void operator=(const vtkCVTSceneRenderer&) = delete;
 
   int Size = 800;

@@ -30,6 +30,11 @@ expect_error "expects a number" image --tolerance abc
 expect_error "XMIN < XMAX" image --domain 1 -1 0 1
 expect_error "lloyd or lbfgs" image --method newton
 expect_error "between 1 and 100" image --corrections 0
+expect_error "0 < r < R" surface --torus 0.4 1
+expect_error "not of 'cvt surface'" surface --invert
+expect_error "need a parameterisation" surface --input mesh.vtp
+expect_error "option of 'cvt surface'" image --torus 1 0.4
+expect_error "mask leaves" surface --gi-resolution 4 4 --sites 100
 expect_error "between 0 and 1" image --gradient-tolerance 2
 # No OpenGL context at all.
 if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then

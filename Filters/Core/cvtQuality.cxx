@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace cvt
 {
@@ -105,6 +106,55 @@ QualityMeasures MeasureQuality(const Grid& grid, const std::vector<double>& site
   q.RadiusStandardDeviation = StandardDeviation(radius);
   q.NearestNeighborStandardDeviation = StandardDeviation(finiteNearest);
   q.AreaStandardDeviation = StandardDeviation(area);
+  return q;
+}
+
+MeshQuality MeasureMesh(
+  const std::vector<double>& points, const std::vector<std::array<int, 3>>& triangles)
+{
+  MeshQuality q;
+  q.AngleHistogram.assign(18, 0);
+  q.MinimumAngle = triangles.empty() ? 0.0 : 180.0;
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const int a = t[e], b = t[(e + 1) % 3], c = t[(e + 2) % 3];
+      edges.insert({ std::min(a, b), std::max(a, b) });
+      double u[3], v[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        u[k] = points[3 * b + k] - points[3 * a + k];
+        v[k] = points[3 * c + k] - points[3 * a + k];
+      }
+      const double nu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+      const double nv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      const double cosine = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / std::max(nu * nv, 1e-300);
+      const double angle =
+        std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+      q.MinimumAngle = std::min(q.MinimumAngle, angle);
+      q.MaximumAngle = std::max(q.MaximumAngle, angle);
+      ++q.AngleHistogram[std::min(17, static_cast<int>(angle / 10.0))];
+    }
+  }
+  std::vector<int> valence(points.size() / 3, 0);
+  for (const auto& e : edges)
+  {
+    ++valence[e.first];
+    ++valence[e.second];
+  }
+  int six = 0;
+  for (int v : valence)
+  {
+    if (static_cast<int>(q.ValenceHistogram.size()) <= v)
+    {
+      q.ValenceHistogram.resize(v + 1, 0);
+    }
+    ++q.ValenceHistogram[v];
+    six += v == 6 ? 1 : 0;
+  }
+  q.Valence6Fraction = valence.empty() ? 0.0 : static_cast<double>(six) / valence.size();
   return q;
 }
 

@@ -5,6 +5,7 @@
 #include "cvtCoreModule.h" // for export macro
 #include "cvtEngine.h"
 
+#include <array>
 #include <vector>
 
 namespace cvt
@@ -23,6 +24,20 @@ struct QualityMeasures
 };
 
 CVTCORE_EXPORT QualityMeasures MeasureQuality(const Grid& grid, const std::vector<double>& sites);
+
+/// Quality of a triangle mesh (a remesh): vertex valences and triangle angles.
+struct MeshQuality
+{
+  std::vector<int> ValenceHistogram; // [v] = number of vertices with v edges
+  std::vector<int> AngleHistogram;   // 18 bins of 10 degrees
+  double MinimumAngle = 0.0;         // degrees
+  double MaximumAngle = 0.0;
+  double Valence6Fraction = 0.0;
+};
+
+/// `points` flat (x, y, z, ...); triangles index them.
+CVTCORE_EXPORT MeshQuality MeasureMesh(
+  const std::vector<double>& points, const std::vector<std::array<int, 3>>& triangles);
 
 } // namespace cvt
 
