@@ -86,6 +86,26 @@ def main(plugin, data_dir, output_dir):
         print("screenshot thresholded error: %g" % error)
         check(error < 20.0, "screenshot matches the baseline (error %g)" % error)
 
+    # The surface proxies with their defaults: a 1024 x 512 torus, 1000 sites, L-BFGS.
+    torus = CVTGeometryImage()
+    surface = CVTSurface(Input=torus)
+    check(list(torus.Resolution) == [1024, 512] and surface.NumberOfSites == 1000,
+          "surface defaults: 1024 x 512, 1000 sites")
+    surface.UpdatePipeline()
+    remesh = servermanager.Fetch(surface, idx=2)
+    edges = set()
+    for c in range(remesh.GetNumberOfCells()):
+        ids = [remesh.GetCell(c).GetPointId(k) for k in range(3)]
+        for k in range(3):
+            edges.add(tuple(sorted((ids[k], ids[(k + 1) % 3]))))
+    euler = remesh.GetNumberOfPoints() - len(edges) + remesh.GetNumberOfCells()
+    check(remesh.GetNumberOfPoints() == 1000, "remesh has the 1000 sites as vertices")
+    check(euler == 0, "torus remesh has Euler characteristic 0 (got %d)" % euler)
+    valence6 = remesh.GetFieldData().GetArray("Valence6Fraction").GetValue(0)
+    print("surface: valence 6 %.1f%%, smallest angle %.1f" %
+          (100 * valence6, remesh.GetFieldData().GetArray("MinimumAngle").GetValue(0)))
+    check(valence6 > 0.6, "mostly valence 6")
+
     # Bad input: more sites than pixels. An error, an empty output; the session goes on.
     messages = vtkStringOutputWindow()
     previous = vtkOutputWindow.GetInstance()
