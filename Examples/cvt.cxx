@@ -4,9 +4,12 @@
 // Run `cvt --help` for the options. Errors go to stderr with exit status 1 (2 for usage).
 #include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTImageFilter.h"
+#include "vtkCVTMeshGeometryImage.h"
 #include "vtkCVTSceneRenderer.h"
 #include "vtkCVTSurfaceFilter.h"
 
+#include "vtkAbstractPolyDataReader.h"
+#include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -16,16 +19,21 @@
 #include "vtkJPEGReader.h"
 #include "vtkMetaImageReader.h"
 #include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkParametricTorus.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkXMLImageDataReader.h"
 #include "vtkXMLImageDataWriter.h"
+#include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
@@ -61,7 +69,8 @@ Input:
 Surface (cvt surface):
   --torus R r             a torus of ring radius R and tube radius r (default 1 0.4)
   --gi-resolution W H     geometry image size (default 1024 512)
-  --input MESH            a triangle mesh (not available yet: needs a parameterisation)
+  --input MESH            a triangle mesh of disk topology (.vtp .vtk .stl .ply .obj),
+                          parameterised onto the square (mean-value coordinates)
 Sites:
   --sites N               number of sites (default 1000)
   --initial-sites FILE    CSV of initial sites, one "x,y" per line (overrides --sites)
@@ -263,10 +272,9 @@ Options ParseArguments(int argc, char* argv[])
   {
     Fail("--torus is an option of 'cvt surface'", 2);
   }
-  if (options.Command == "surface" && !options.Input.empty())
+  if (options.Command == "surface" && !options.Input.empty() && options.HaveTorus)
   {
-    Fail("'cvt surface --input MESH' is not available yet: meshes need a parameterisation onto "
-         "a geometry image; use --torus R r");
+    Fail("give either --input MESH or --torus R r, not both", 2);
   }
   if (options.Method != "lloyd" && options.Method != "lbfgs")
   {
@@ -462,6 +470,9 @@ template<typename Writer>
 void Write(vtkDataObject* data, const std::string& path)
 {
   vtkNew<Writer> writer;
+  // Inline base64, not appended raw data: Debian 12's expat rejects the raw appended section,
+  // so VTK and ParaView there could not read the files back.
+  writer->SetDataModeToBinary();
   writer->SetInputData(data);
   writer->SetFileName(path.c_str());
   if (writer->Write() != 1)
@@ -637,14 +648,72 @@ int RunImage(const Options& options)
   return 0;
 }
 
+/// The surface's geometry image: a torus, or a mesh read from --input and parameterised.
+vtkSmartPointer<vtkAlgorithm> SurfaceGeometryImage(const Options& options)
+{
+  if (options.Input.empty())
+  {
+    vtkNew<vtkParametricTorus> torus;
+    torus->SetRingRadius(options.Torus[0]);
+    torus->SetCrossSectionRadius(options.Torus[1]);
+    auto source = vtkSmartPointer<vtkCVTGeometryImageSource>::New();
+    source->SetParametricFunction(torus);
+    source->SetResolution(options.GIResolution[0], options.GIResolution[1]);
+    return source;
+  }
+  struct stat info;
+  if (stat(options.Input.c_str(), &info) != 0)
+  {
+    Fail("cannot read --input '" + options.Input + "': no such file");
+  }
+  const std::string ext = Extension(options.Input);
+  vtkSmartPointer<vtkAbstractPolyDataReader> reader;
+  vtkSmartPointer<vtkAlgorithm> xmlOrLegacy;
+  if (ext == "vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(options.Input.c_str());
+    xmlOrLegacy = r;
+  }
+  else if (ext == "vtk")
+  {
+    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(options.Input.c_str());
+    xmlOrLegacy = r;
+  }
+  else if (ext == "stl")
+    reader = vtkSmartPointer<vtkSTLReader>::New();
+  else if (ext == "ply")
+    reader = vtkSmartPointer<vtkPLYReader>::New();
+  else if (ext == "obj")
+    reader = vtkSmartPointer<vtkOBJReader>::New();
+  else
+  {
+    Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj");
+  }
+  if (reader)
+  {
+    reader->SetFileName(options.Input.c_str());
+  }
+  // Formats such as STL repeat shared points: merge them so that triangles share edges.
+  vtkNew<vtkCleanPolyData> merge;
+  merge->SetInputConnection(reader ? reader->GetOutputPort() : xmlOrLegacy->GetOutputPort());
+  auto parameterise = vtkSmartPointer<vtkCVTMeshGeometryImage>::New();
+  parameterise->SetInputConnection(merge->GetOutputPort());
+  parameterise->SetResolution(options.GIResolution[0], options.GIResolution[1]);
+  return parameterise;
+}
+
 int RunSurface(const Options& options)
 {
-  vtkNew<vtkParametricTorus> torus;
-  torus->SetRingRadius(options.Torus[0]);
-  torus->SetCrossSectionRadius(options.Torus[1]);
-  vtkNew<vtkCVTGeometryImageSource> geometryImage;
-  geometryImage->SetParametricFunction(torus);
-  geometryImage->SetResolution(options.GIResolution[0], options.GIResolution[1]);
+  vtkSmartPointer<vtkAlgorithm> geometryImage = SurfaceGeometryImage(options);
+  vtkNew<ErrorObserver> meshErrors;
+  geometryImage->AddObserver(vtkCommand::ErrorEvent, meshErrors);
+  geometryImage->Update();
+  if (!meshErrors->Message.empty())
+  {
+    Fail(meshErrors->Message);
+  }
   vtkNew<vtkCVTSurfaceFilter> cvt;
   cvt->SetInputConnection(geometryImage->GetOutputPort());
   SetOptimizer(options, cvt.Get());

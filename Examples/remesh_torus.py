@@ -43,6 +43,7 @@ def main(argv):
 
     writer = vtkXMLPolyDataWriter()
     writer.SetInputData(remesh)
+    writer.SetDataModeToBinary()  # inline base64: Debian 12's expat rejects appended raw data
     writer.SetFileName(mesh_file)
     writer.Write()
     picture = vtkCVTSceneRenderer().RenderMesh(remesh)

@@ -1,21 +1,16 @@
 #include "vtkCVTGeometryImageSource.h"
 
 #include "cvtSurface.h"
+#include "vtkCVTOutputHelpers.h"
 
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
-#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkParametricTorus.h"
-#include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -117,47 +112,7 @@ int vtkCVTGeometryImageSource::RequestData(
   }
   image.AreaWeight = cvt::ComputeAreaWeights(image);
 
-  output->SetExtent(0, w - 1, 0, h - 1, 0, 0);
-  vtkNew<vtkFloatArray> position, normal, weight;
-  position->SetName("Position");
-  position->SetNumberOfComponents(3);
-  position->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
-  normal->SetName("Normal");
-  normal->SetNumberOfComponents(3);
-  normal->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
-  weight->SetName("AreaWeight");
-  weight->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
-  vtkNew<vtkUnsignedCharArray> mask;
-  mask->SetName("Mask");
-  mask->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
-  double minimum = VTK_DOUBLE_MAX, maximum = 0.0, total = 0.0;
-  for (size_t p = 0; p < pixels; ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      position->SetValue(3 * p + c, image.Position[3 * p + c]);
-      normal->SetValue(3 * p + c, image.Normal[3 * p + c]);
-    }
-    weight->SetValue(static_cast<vtkIdType>(p), image.AreaWeight[p]);
-    mask->SetValue(static_cast<vtkIdType>(p), 1);
-    minimum = std::min(minimum, static_cast<double>(image.AreaWeight[p]));
-    maximum = std::max(maximum, static_cast<double>(image.AreaWeight[p]));
-    total += image.AreaWeight[p];
-  }
-  output->GetPointData()->AddArray(position);
-  output->GetPointData()->AddArray(normal);
-  output->GetPointData()->AddArray(weight);
-  output->GetPointData()->AddArray(mask);
-  for (const auto& entry : { std::make_pair("WrapU", image.WrapU ? 1.0 : 0.0),
-         std::make_pair("WrapV", image.WrapV ? 1.0 : 0.0),
-         std::make_pair("MinimumAreaWeight", minimum), std::make_pair("MaximumAreaWeight", maximum),
-         std::make_pair("TotalArea", total) })
-  {
-    vtkNew<vtkDoubleArray> value;
-    value->SetName(entry.first);
-    value->InsertNextValue(entry.second);
-    output->GetFieldData()->AddArray(value);
-  }
+  cvtvtk::WriteGeometryImage(image, output);
   return 1;
 }
 

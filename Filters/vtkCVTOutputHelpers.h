@@ -8,7 +8,12 @@
 #include <vector>
 
 class vtkFieldData;
+class vtkImageData;
 class vtkTable;
+namespace cvt
+{
+struct GeometryImage;
+}
 
 namespace cvtvtk
 {
@@ -21,6 +26,10 @@ void AddFieldString(vtkFieldData* fields, const char* name, const std::string& v
 
 /// Columns iteration, evaluations, energy, gradient_norm, seconds.
 void FillHistoryTable(vtkTable* table, const std::vector<cvt::HistoryEntry>& history);
+
+/// A geometry image as vtkImageData: point arrays Position, Normal, AreaWeight, Mask; field
+/// data WrapU, WrapV, MinimumAreaWeight, MaximumAreaWeight, TotalArea.
+void WriteGeometryImage(const cvt::GeometryImage& image, vtkImageData* output);
 
 } // namespace cvtvtk
 

@@ -1,5 +1,6 @@
 #include "vtkCVTSurfaceFilter.h"
 
+#include "cvtParameterization.h"
 #include "cvtQuality.h"
 #include "cvtSurface.h"
 #include "cvtSurfaceOptimizer.h"
@@ -24,46 +25,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 vtkStandardNewMacro(vtkCVTSurfaceFilter);
 
 namespace
 {
-/// Unit normals from central differences of the positions (wrap-aware), for geometry images
-/// that bring none.
-std::vector<float> NormalsFromPositions(const cvt::GeometryImage& image)
-{
-  std::vector<float> normals(image.Position.size(), 0.0f);
-  for (int j = 0; j < image.Height; ++j)
-  {
-    for (int i = 0; i < image.Width; ++i)
-    {
-      const auto at = [&](int di, int dj)
-      {
-        long long q = image.Neighbor(i, j, di, dj);
-        return q < 0 ? image.Neighbor(i, j, 0, 0) : q;
-      };
-      const long long right = at(1, 0), left = at(-1, 0), up = at(0, 1), down = at(0, -1);
-      double du[3], dv[3];
-      for (int c = 0; c < 3; ++c)
-      {
-        du[c] = image.Position[3 * right + c] - image.Position[3 * left + c];
-        dv[c] = image.Position[3 * up + c] - image.Position[3 * down + c];
-      }
-      double n[3] = { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
-        du[0] * dv[1] - du[1] * dv[0] };
-      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      const size_t p = static_cast<size_t>(j) * image.Width + i;
-      for (int c = 0; c < 3; ++c)
-      {
-        normals[3 * p + c] =
-          length > 0.0 ? static_cast<float>(n[c] / length) : (c == 2 ? 1.0f : 0.0f);
-      }
-    }
-  }
-  return normals;
-}
-
 bool ReadFloats(vtkDataArray* array, int components, std::vector<float>& out)
 {
   if (!array || array->GetNumberOfComponents() != components)
@@ -150,6 +117,55 @@ int vtkCVTSurfaceFilter::RequestUpdateExtent(
 }
 
 //------------------------------------------------------------------------------
+bool vtkCVTSurfaceFilter::ReadGeometryImage(
+  vtkImageData* input, cvt::GeometryImage& image, std::string& error)
+{
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    error = "The geometry image is empty; give a vtkImageData with a Position array.";
+    return false;
+  }
+  int dims[3];
+  input->GetDimensions(dims);
+  if (dims[2] != 1)
+  {
+    error = "The geometry image is 3D (" + std::to_string(dims[0]) + " x " +
+      std::to_string(dims[1]) + " x " + std::to_string(dims[2]) + "); it must be one 2D slice.";
+    return false;
+  }
+  image = cvt::GeometryImage();
+  image.Width = dims[0];
+  image.Height = dims[1];
+  vtkFieldData* inFields = input->GetFieldData();
+  image.WrapU = inFields->GetArray("WrapU") && inFields->GetArray("WrapU")->GetTuple1(0) != 0.0;
+  image.WrapV = inFields->GetArray("WrapV") && inFields->GetArray("WrapV")->GetTuple1(0) != 0.0;
+  vtkPointData* pd = input->GetPointData();
+  if (!ReadFloats(pd->GetArray("Position"), 3, image.Position))
+  {
+    error = "The geometry image has no 3-component point array 'Position'; make one with "
+            "vtkCVTGeometryImageSource.";
+    return false;
+  }
+  if (!ReadFloats(pd->GetArray("Normal"), 3, image.Normal))
+  {
+    image.Normal = cvt::NormalsFromPositions(image);
+  }
+  if (vtkDataArray* mask = pd->GetArray("Mask"))
+  {
+    image.Mask.resize(static_cast<size_t>(mask->GetNumberOfTuples()));
+    for (vtkIdType p = 0; p < mask->GetNumberOfTuples(); ++p)
+    {
+      image.Mask[p] = mask->GetComponent(p, 0) != 0.0 ? 1 : 0;
+    }
+  }
+  if (!ReadFloats(pd->GetArray("AreaWeight"), 1, image.AreaWeight))
+  {
+    image.AreaWeight = cvt::ComputeAreaWeights(image);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkCVTSurfaceFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -165,47 +181,12 @@ int vtkCVTSurfaceFilter::RequestData(
   this->ContextDescription.clear();
 
   // --- The geometry image.
-  if (!input || input->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro("The geometry image is empty; give a vtkImageData with a Position array.");
-    return 0;
-  }
-  int dims[3];
-  input->GetDimensions(dims);
-  if (dims[2] != 1)
-  {
-    vtkErrorMacro("The geometry image is 3D (" << dims[0] << " x " << dims[1] << " x " << dims[2]
-                                               << "); it must be one 2D slice.");
-    return 0;
-  }
   cvt::GeometryImage image;
-  image.Width = dims[0];
-  image.Height = dims[1];
-  vtkFieldData* inFields = input->GetFieldData();
-  image.WrapU = inFields->GetArray("WrapU") && inFields->GetArray("WrapU")->GetTuple1(0) != 0.0;
-  image.WrapV = inFields->GetArray("WrapV") && inFields->GetArray("WrapV")->GetTuple1(0) != 0.0;
-  vtkPointData* pd = input->GetPointData();
-  if (!ReadFloats(pd->GetArray("Position"), 3, image.Position))
+  std::string readError;
+  if (!ReadGeometryImage(input, image, readError))
   {
-    vtkErrorMacro("The geometry image has no 3-component point array 'Position'; make one with "
-                  "vtkCVTGeometryImageSource.");
+    vtkErrorMacro("" << readError);
     return 0;
-  }
-  if (!ReadFloats(pd->GetArray("Normal"), 3, image.Normal))
-  {
-    image.Normal = NormalsFromPositions(image);
-  }
-  if (vtkDataArray* mask = pd->GetArray("Mask"))
-  {
-    image.Mask.resize(static_cast<size_t>(mask->GetNumberOfTuples()));
-    for (vtkIdType p = 0; p < mask->GetNumberOfTuples(); ++p)
-    {
-      image.Mask[p] = mask->GetComponent(p, 0) != 0.0 ? 1 : 0;
-    }
-  }
-  if (!ReadFloats(pd->GetArray("AreaWeight"), 1, image.AreaWeight))
-  {
-    image.AreaWeight = cvt::ComputeAreaWeights(image);
   }
   const std::string problem = cvt::CheckGeometryImage(image, this->NumberOfSites);
   if (!problem.empty())

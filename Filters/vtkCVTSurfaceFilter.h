@@ -27,6 +27,10 @@
 
 #include <string> // for std::string
 
+namespace cvt
+{
+struct GeometryImage;
+}
 class vtkImageData;
 class vtkPolyData;
 class vtkTable;
@@ -76,6 +80,13 @@ public:
   vtkTable* GetHistoryOutput();
 
   const std::string& GetContextDescription() const { return this->ContextDescription; }
+
+  /**
+   * Reads a geometry image (Position required; Normal and AreaWeight computed when missing;
+   * Mask optional; WrapU/WrapV field data) into the numerical core's form. Returns false with
+   * a message saying what to fix.
+   */
+  static bool ReadGeometryImage(vtkImageData* input, cvt::GeometryImage& image, std::string& error);
 
 protected:
   vtkCVTSurfaceFilter();

@@ -32,10 +32,16 @@ expect_error "lloyd or lbfgs" image --method newton
 expect_error "between 1 and 100" image --corrections 0
 expect_error "0 < r < R" surface --torus 0.4 1
 expect_error "not of 'cvt surface'" surface --invert
-expect_error "need a parameterisation" surface --input mesh.vtp
+expect_error "no such file" surface --input "$T/missing.vtp"
+: > "$T/mesh.xyz"
+expect_error "unknown type" surface --input "$T/mesh.xyz"
 expect_error "option of 'cvt surface'" image --torus 1 0.4
 expect_error "mask leaves" surface --gi-resolution 4 4 --sites 100
 expect_error "between 0 and 1" image --gradient-tolerance 2
+# A closed mesh (a torus remesh) is not a disk; points alone are not triangles.
+env -u DISPLAY "$CVT" surface --gi-resolution 64 32 --sites 40 --iterations 2 --output "$T/torus" --quiet
+expect_error "closed" surface --input "$T/torus/remesh.vtp" --gi-resolution 32 32
+expect_error "no triangles" surface --input "$T/torus/sites.vtp" --gi-resolution 32 32
 # No OpenGL context at all.
 if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
   echo "ran without an OpenGL context"; bad=1

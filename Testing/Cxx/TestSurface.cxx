@@ -2,11 +2,14 @@
 // sums, the constrained CVT on a torus, remeshing of a torus and a sphere, bad input.
 #include "cvtSurface.h"
 #include "vtkCVTGeometryImageSource.h"
+#include "vtkCVTMeshGeometryImage.h"
 #include "vtkCVTSurfaceEngine.h"
 #include "vtkCVTSurfaceFilter.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCell.h"
 #include "vtkCellArray.h"
+#include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -15,13 +18,18 @@
 #include "vtkNew.h"
 #include "vtkParametricEllipsoid.h"
 #include "vtkParametricTorus.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSphereSource.h"
 #include "vtkTable.h"
+#include "vtkTriangle.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -40,26 +48,8 @@ vtkSmartPointer<vtkImageData> Torus(int w, int h)
 cvt::GeometryImage ToGeometryImage(vtkImageData* image)
 {
   cvt::GeometryImage gi;
-  int dims[3];
-  image->GetDimensions(dims);
-  gi.Width = dims[0];
-  gi.Height = dims[1];
-  gi.WrapU = image->GetFieldData()->GetArray("WrapU")->GetTuple1(0) != 0;
-  gi.WrapV = image->GetFieldData()->GetArray("WrapV")->GetTuple1(0) != 0;
-  for (const char* name : { "Position", "Normal", "AreaWeight" })
-  {
-    vtkDataArray* array = image->GetPointData()->GetArray(name);
-    std::vector<float>& out = std::string(name) == "Position" ? gi.Position
-      : std::string(name) == "Normal"                         ? gi.Normal
-                                                              : gi.AreaWeight;
-    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
-    {
-      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-      {
-        out.push_back(static_cast<float>(array->GetComponent(t, c)));
-      }
-    }
-  }
+  std::string error;
+  EXPECT_TRUE(vtkCVTSurfaceFilter::ReadGeometryImage(image, gi, error)) << error;
   return gi;
 }
 
@@ -303,4 +293,133 @@ TEST(SurfaceFilterBadInput, EveryBadGeometryImageSaysWhatToFix)
   vtkNew<vtkImageData> volume;
   volume->SetDimensions(4, 4, 4);
   EXPECT_NE(FailWith(volume).find("3D"), std::string::npos);
+}
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> Hemisphere()
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.5);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  sphere->SetEndPhi(90.0); // the upper half: a disk bounded by the equator
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputConnection(sphere->GetOutputPort());
+  clean->Update();
+  return clean->GetOutput();
+}
+
+double MeshArea(vtkPolyData* mesh)
+{
+  double area = 0.0;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    double a[3], b[3], d[3];
+    vtkCell* cell = mesh->GetCell(c);
+    mesh->GetPoint(cell->GetPointId(0), a);
+    mesh->GetPoint(cell->GetPointId(1), b);
+    mesh->GetPoint(cell->GetPointId(2), d);
+    area += vtkTriangle::TriangleArea(a, b, d);
+  }
+  return area;
+}
+
+std::string MeshError(vtkPolyData* mesh)
+{
+  vtkNew<vtkCVTMeshGeometryImage> gi;
+  vtkNew<ErrorCatcher> catcher;
+  gi->AddObserver(vtkCommand::ErrorEvent, catcher);
+  gi->SetInputData(mesh);
+  gi->SetResolution(32, 32);
+  gi->Update();
+  EXPECT_EQ(gi->GetOutput()->GetNumberOfPoints(), 0);
+  return catcher->Message;
+}
+}
+
+TEST(MeshGeometryImage, DiskMeshIsParameterisedResampledAndRemeshed)
+{
+  auto mesh = Hemisphere();
+  vtkNew<vtkCVTMeshGeometryImage> gi;
+  gi->SetInputData(mesh);
+  gi->SetResolution(128, 128);
+  gi->Update();
+  const double area = MeshArea(mesh);
+  const double total = gi->GetOutput()->GetFieldData()->GetArray("TotalArea")->GetTuple1(0);
+  std::cout << "[ measured ] hemisphere mesh area " << area << ", geometry image " << total
+            << ", distortion max/min "
+            << gi->GetOutput()->GetFieldData()->GetArray("MaximumAreaWeight")->GetTuple1(0) /
+      gi->GetOutput()->GetFieldData()->GetArray("MinimumAreaWeight")->GetTuple1(0)
+            << "\n";
+  EXPECT_NEAR(total, area, 0.02 * area);
+
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(gi->GetOutputPort());
+  cvt->SetNumberOfSites(120);
+  cvt->SetMaximumNumberOfIterations(30);
+  cvt->SetMethodToLloyd();
+  cvt->Update();
+  ASSERT_EQ(cvt->GetSitesOutput()->GetNumberOfPoints(), 120);
+  for (vtkIdType i = 0; i < 120; ++i)
+  {
+    double p[3];
+    cvt->GetSitesOutput()->GetPoint(i, p);
+    EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 0.5, 0.01);
+  }
+  const MeshCheck remesh = CheckMesh(cvt->GetRemeshOutput());
+  EXPECT_EQ(remesh.MisorientedEdges, 0);
+  EXPECT_EQ(remesh.DuplicateFaces, 0);
+  EXPECT_EQ(remesh.Euler(), 1); // a disk
+}
+
+TEST(MeshGeometryImageBadInput, EveryBadMeshSaysWhatTheParameterisationNeeds)
+{
+  vtkNew<vtkPlaneSource> quads; // quadrilaterals, not triangles
+  quads->Update();
+  EXPECT_NE(MeshError(quads->GetOutput()).find("triangles only"), std::string::npos);
+
+  const auto make = [](const std::vector<std::array<double, 3>>& points,
+                      const std::vector<std::array<vtkIdType, 3>>& triangles)
+  {
+    auto mesh = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> p;
+    for (const auto& x : points)
+    {
+      p->InsertNextPoint(x.data());
+    }
+    vtkNew<vtkCellArray> cells;
+    for (const auto& t : triangles)
+    {
+      cells->InsertNextCell(3, t.data());
+    }
+    mesh->SetPoints(p);
+    mesh->SetPolys(cells);
+    return mesh;
+  };
+  // Three triangles on one edge.
+  EXPECT_NE(MeshError(make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } },
+                        { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }))
+              .find("not manifold"),
+    std::string::npos);
+  // Two separate triangles.
+  EXPECT_NE(
+    MeshError(make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 } },
+                { { 0, 1, 2 }, { 3, 4, 5 } }))
+      .find("2 connected components"),
+    std::string::npos);
+  // A zero-area triangle.
+  EXPECT_NE(
+    MeshError(make({ { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, { { 0, 1, 2 } })).find("zero area"),
+    std::string::npos);
+  // NaN coordinates.
+  EXPECT_NE(MeshError(make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, std::nan(""), 0 } }, { { 0, 1, 2 } }))
+              .find("not finite"),
+    std::string::npos);
+  // A closed sphere: the disk parameterisation says what it needs.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  const std::string closed = MeshError(sphere->GetOutput());
+  EXPECT_NE(closed.find("closed"), std::string::npos) << closed;
+  EXPECT_NE(closed.find("needs a disk"), std::string::npos) << closed;
 }

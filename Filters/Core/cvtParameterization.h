@@ -1,0 +1,43 @@
+// Geometry images of triangle meshes of disk topology: a mean-value (Floater) parameterisation
+// onto the unit square, boundary on the square's perimeter by arc length (a sparse solve with
+// Eigen), then resampling on a W x H grid.
+#ifndef cvtParameterization_h
+#define cvtParameterization_h
+
+#include "cvtCoreModule.h" // for export macro
+#include "cvtSurface.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cvt
+{
+
+struct TriangleMesh
+{
+  std::vector<double> Points; // 3 per vertex
+  std::vector<std::array<int, 3>> Triangles;
+};
+
+/// Checks that the mesh is a single manifold disk: finite coordinates, no zero-area triangle,
+/// every edge on at most two triangles, one connected component, one boundary loop, Euler
+/// characteristic 1. Empty string when fine, else what is wrong and what the mesh would need.
+CVTCORE_EXPORT std::string CheckDiskMesh(const TriangleMesh& mesh);
+
+/// (u, v) in [0, 1]^2 per vertex: mean-value coordinates, boundary on the square. The mesh
+/// must pass CheckDiskMesh. Returns false with a message when the solve fails.
+CVTCORE_EXPORT bool ParameterizeDisk(
+  const TriangleMesh& mesh, std::vector<double>& uv, std::string& error);
+
+/// Samples the parameterised mesh at the pixel centres of a W x H grid: positions by
+/// barycentric interpolation, normals, area weights, mask (pixels no triangle covers).
+CVTCORE_EXPORT GeometryImage ResampleMesh(
+  const TriangleMesh& mesh, const std::vector<double>& uv, int width, int height);
+
+/// Unit normals of a geometry image from central differences of its positions (wrap-aware).
+CVTCORE_EXPORT std::vector<float> NormalsFromPositions(const GeometryImage& image);
+
+} // namespace cvt
+
+#endif
