@@ -69,8 +69,9 @@ Input:
 Surface (cvt surface):
   --torus R r             a torus of ring radius R and tube radius r (default 1 0.4)
   --gi-resolution W H     geometry image size (default 1024 512)
-  --input MESH            a triangle mesh of disk topology (.vtp .vtk .stl .ply .obj),
-                          parameterised onto the square (mean-value coordinates)
+  --input MESH            a triangle mesh (.vtp .vtk .stl .ply .obj): a disk (parameterised
+                          onto the square, mean-value coordinates) or a closed genus-0 mesh
+                          star-shaped about its centroid (cut open at a meridian and poles)
 Sites:
   --sites N               number of sites (default 1000)
   --initial-sites FILE    CSV of initial sites, one "x,y" per line (overrides --sites)

@@ -4,14 +4,20 @@
 #include "vtkCVTOutputHelpers.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellLocator.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTriangle.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 vtkStandardNewMacro(vtkCVTMeshGeometryImage);
 
@@ -82,11 +88,24 @@ int vtkCVTMeshGeometryImage::RequestData(
     mesh.Triangles.push_back(
       { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
   }
-  const std::string problem = cvt::CheckDiskMesh(mesh);
+  bool closed = false;
+  const std::string problem = cvt::CheckMesh(mesh, closed);
   if (!problem.empty())
   {
     vtkErrorMacro("Bad mesh: " << problem << ".");
     return 0;
+  }
+  if (closed)
+  {
+    cvt::GeometryImage image;
+    std::string error;
+    if (!this->SampleClosedMesh(input, image, error))
+    {
+      vtkErrorMacro("The closed mesh could not be parameterised: " << error << ".");
+      return 0;
+    }
+    cvtvtk::WriteGeometryImage(image, output);
+    return 1;
   }
   std::vector<double> uv;
   std::string error;
@@ -98,6 +117,101 @@ int vtkCVTMeshGeometryImage::RequestData(
   cvtvtk::WriteGeometryImage(
     cvt::ResampleMesh(mesh, uv, this->Resolution[0], this->Resolution[1]), output);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTMeshGeometryImage::SampleClosedMesh(
+  vtkPolyData* mesh, cvt::GeometryImage& image, std::string& error)
+{
+  // The centre: the area-weighted centroid. Every triangle must face away from it (or every
+  // one towards it): then each ray from the centre meets the surface once.
+  double centre[3] = { 0.0, 0.0, 0.0 }, area = 0.0;
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    double a[3], b[3], c[3];
+    mesh->GetPoint(ids[0], a);
+    mesh->GetPoint(ids[1], b);
+    mesh->GetPoint(ids[2], c);
+    const double w = vtkTriangle::TriangleArea(a, b, c);
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] += w * (a[k] + b[k] + c[k]) / 3.0;
+    }
+    area += w;
+  }
+  for (double& c : centre)
+  {
+    c /= area;
+  }
+  int outward = 0, inward = 0;
+  double radius = 0.0;
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    double a[3], b[3], c[3], normal[3];
+    mesh->GetPoint(ids[0], a);
+    mesh->GetPoint(ids[1], b);
+    mesh->GetPoint(ids[2], c);
+    vtkTriangle::ComputeNormal(a, b, c, normal);
+    double toCentre[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      toCentre[k] = (a[k] + b[k] + c[k]) / 3.0 - centre[k];
+      radius = std::max(radius, std::sqrt(vtkMath::Distance2BetweenPoints(a, centre)));
+    }
+    const double facing = vtkMath::Dot(normal, toCentre);
+    outward += facing > 0.0 ? 1 : 0;
+    inward += facing < 0.0 ? 1 : 0;
+  }
+  if (outward > 0 && inward > 0)
+  {
+    error = "it is not star-shaped about its centroid (some triangles face the centre, others "
+            "away); the closed-surface parameterisation needs a star-shaped genus-0 mesh";
+    return false;
+  }
+  // Cut open along a meridian and at the poles: columns around the axis (wrapped), rows from
+  // pole to pole; each pixel is where the ray from the centre meets the surface.
+  vtkNew<vtkCellLocator> locator;
+  locator->SetDataSet(mesh);
+  locator->BuildLocator();
+  const int w = this->Resolution[0], h = this->Resolution[1];
+  image = cvt::GeometryImage();
+  image.Width = w;
+  image.Height = h;
+  image.WrapU = true;
+  image.Position.resize(3 * static_cast<size_t>(w) * h);
+  const double pi = vtkMath::Pi();
+  for (int j = 0; j < h; ++j)
+  {
+    const double polar = pi * j / (h - 1);
+    for (int i = 0; i < w; ++i)
+    {
+      const double azimuth = 2.0 * pi * (i + 0.5) / w;
+      const double direction[3] = { std::sin(polar) * std::cos(azimuth),
+        std::sin(polar) * std::sin(azimuth), -std::cos(polar) };
+      double end[3], hit[3], pcoords[3], t = 0.0;
+      int subId = 0;
+      for (int k = 0; k < 3; ++k)
+      {
+        end[k] = centre[k] + 2.0 * radius * direction[k];
+      }
+      if (!locator->IntersectWithLine(centre, end, 1e-9, t, hit, pcoords, subId))
+      {
+        error = "a ray from the centroid missed the surface";
+        return false;
+      }
+      const size_t p = static_cast<size_t>(j) * w + i;
+      for (int k = 0; k < 3; ++k)
+      {
+        image.Position[3 * p + k] = static_cast<float>(hit[k]);
+      }
+    }
+  }
+  image.Normal = cvt::NormalsFromPositions(image);
+  image.AreaWeight = cvt::ComputeAreaWeights(image);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -81,8 +81,9 @@ std::vector<int> BoundaryLoop(const TriangleMesh& mesh)
 }
 }
 
-std::string CheckDiskMesh(const TriangleMesh& mesh)
+std::string CheckMesh(const TriangleMesh& mesh, bool& closed)
 {
+  closed = false;
   const int n = static_cast<int>(mesh.Points.size() / 3);
   if (mesh.Triangles.empty())
   {
@@ -160,10 +161,14 @@ std::string CheckDiskMesh(const TriangleMesh& mesh)
     vertices - static_cast<long long>(uses.size()) + static_cast<long long>(mesh.Triangles.size());
   if (boundaryEdges == 0)
   {
+    if (euler == 2)
+    {
+      closed = true;
+      return std::string();
+    }
     std::ostringstream msg;
-    msg << "the mesh is closed (Euler characteristic " << euler
-        << "); this parameterisation needs a disk: one boundary loop, Euler characteristic 1 "
-           "(cutting closed meshes open is not available yet)";
+    msg << "the mesh is closed with Euler characteristic " << euler << " (genus " << (2 - euler) / 2
+        << "); the parameterisations need a disk (one boundary loop) or a closed genus-0 surface";
     return msg.str();
   }
   if (euler != 1 || BoundaryLoop(mesh).empty())

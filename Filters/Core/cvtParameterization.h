@@ -20,13 +20,15 @@ struct TriangleMesh
   std::vector<std::array<int, 3>> Triangles;
 };
 
-/// Checks that the mesh is a single manifold disk: finite coordinates, no zero-area triangle,
-/// every edge on at most two triangles, one connected component, one boundary loop, Euler
-/// characteristic 1. Empty string when fine, else what is wrong and what the mesh would need.
-CVTCORE_EXPORT std::string CheckDiskMesh(const TriangleMesh& mesh);
+/// Checks that the mesh is one manifold surface that can be parameterised: finite coordinates,
+/// no zero-area triangle, every edge on at most two triangles, one connected component, and
+/// either a disk (one boundary loop, Euler characteristic 1) or a closed genus-0 surface (no
+/// boundary, Euler characteristic 2; `closed` is then set). Empty string when fine, else what
+/// is wrong and what the parameterisation needs.
+CVTCORE_EXPORT std::string CheckMesh(const TriangleMesh& mesh, bool& closed);
 
 /// (u, v) in [0, 1]^2 per vertex: mean-value coordinates, boundary on the square. The mesh
-/// must pass CheckDiskMesh. Returns false with a message when the solve fails.
+/// must pass CheckMesh as a disk. Returns false with a message when the solve fails.
 CVTCORE_EXPORT bool ParameterizeDisk(
   const TriangleMesh& mesh, std::vector<double>& uv, std::string& error);
 

@@ -416,10 +416,64 @@ TEST(MeshGeometryImageBadInput, EveryBadMeshSaysWhatTheParameterisationNeeds)
   EXPECT_NE(MeshError(make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, std::nan(""), 0 } }, { { 0, 1, 2 } }))
               .find("not finite"),
     std::string::npos);
-  // A closed sphere: the disk parameterisation says what it needs.
+  // A sphere with its cap pushed in: genus 0 but not star-shaped about its centroid.
+  vtkNew<vtkSphereSource> dented;
+  dented->SetThetaResolution(24);
+  dented->SetPhiResolution(24);
+  dented->Update();
+  vtkPoints* points = dented->GetOutput()->GetPoints();
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    points->GetPoint(p, x);
+    if (x[2] > 0.2)
+    {
+      x[2] = 0.2 - 3.0 * (x[2] - 0.2);
+      points->SetPoint(p, x);
+    }
+  }
+  const std::string star = MeshError(dented->GetOutput());
+  EXPECT_NE(star.find("not star-shaped"), std::string::npos) << star;
+
+  // A closed torus mesh: genus 1, which neither parameterisation handles.
+  vtkNew<vtkCVTGeometryImageSource> torusImage;
+  torusImage->SetResolution(32, 16);
+  vtkNew<vtkCVTSurfaceFilter> torusRemesh;
+  torusRemesh->SetInputConnection(torusImage->GetOutputPort());
+  torusRemesh->SetNumberOfSites(60);
+  torusRemesh->SetMaximumNumberOfIterations(3);
+  torusRemesh->Update();
+  const std::string genus = MeshError(torusRemesh->GetRemeshOutput());
+  EXPECT_NE(genus.find("genus 1"), std::string::npos) << genus;
+  EXPECT_NE(genus.find("closed genus-0"), std::string::npos) << genus;
+}
+
+TEST(MeshGeometryImage, ClosedGenus0MeshIsCutOpenAndRemeshedClosed)
+{
   vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.5);
+  sphere->SetThetaResolution(40);
+  sphere->SetPhiResolution(20);
   sphere->Update();
-  const std::string closed = MeshError(sphere->GetOutput());
-  EXPECT_NE(closed.find("closed"), std::string::npos) << closed;
-  EXPECT_NE(closed.find("needs a disk"), std::string::npos) << closed;
+  vtkNew<vtkCVTMeshGeometryImage> gi;
+  gi->SetInputConnection(sphere->GetOutputPort());
+  gi->SetResolution(128, 64);
+  gi->Update();
+  const double area = MeshArea(sphere->GetOutput());
+  const double total = gi->GetOutput()->GetFieldData()->GetArray("TotalArea")->GetTuple1(0);
+  std::cout << "[ measured ] sphere mesh area " << area << ", geometry image " << total << "\n";
+  EXPECT_NEAR(total, area, 0.02 * area);
+  EXPECT_EQ(gi->GetOutput()->GetFieldData()->GetArray("WrapU")->GetTuple1(0), 1.0);
+
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(gi->GetOutputPort());
+  cvt->SetNumberOfSites(150);
+  cvt->SetMaximumNumberOfIterations(30);
+  cvt->SetMethodToLloyd();
+  cvt->Update();
+  const MeshCheck remesh = CheckMesh(cvt->GetRemeshOutput());
+  EXPECT_EQ(remesh.Vertices, 150);
+  EXPECT_EQ(remesh.NonManifoldEdges, 0);
+  EXPECT_EQ(remesh.MisorientedEdges, 0);
+  EXPECT_EQ(remesh.Euler(), 2);
 }

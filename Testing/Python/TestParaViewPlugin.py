@@ -106,6 +106,14 @@ def main(plugin, data_dir, output_dir):
           (100 * valence6, remesh.GetFieldData().GetArray("MinimumAngle").GetValue(0)))
     check(valence6 > 0.6, "mostly valence 6")
 
+    # A bundled mesh through the mesh geometry image proxy.
+    from paraview.simple import XMLPolyDataReader
+    mesh = XMLPolyDataReader(FileName=[os.path.join(data_dir, "hemisphere.vtp")])
+    mesh_image = CVTMeshGeometryImage(Input=mesh, Resolution=[128, 128])
+    mesh_cvt = CVTSurface(Input=mesh_image, NumberOfSites=100, MaximumNumberOfIterations=10)
+    mesh_cvt.UpdatePipeline()
+    check(mesh_cvt.GetDataInformation(2).GetNumberOfPoints() == 100, "mesh remesh has 100 vertices")
+
     # Bad input: more sites than pixels. An error, an empty output; the session goes on.
     messages = vtkStringOutputWindow()
     previous = vtkOutputWindow.GetInstance()
