@@ -217,6 +217,29 @@ TEST(SurfaceFilter, TorusWith600SitesAndItsRemesh)
     cvt->GetLabelsOutput()->GetPointData()->GetArray("SiteId")->GetNumberOfTuples(), 256 * 128);
 }
 
+TEST(SurfaceFilter, AbortStopsTheIterations)
+{
+  vtkNew<vtkCVTGeometryImageSource> source;
+  source->SetResolution(64, 32);
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(source->GetOutputPort());
+  cvt->SetNumberOfSites(50);
+  cvt->SetMaximumNumberOfIterations(1000);
+  cvt->SetTolerance(0.0);
+  vtkNew<vtkCallbackCommand> abortSoon;
+  abortSoon->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
+    {
+      auto* filter = static_cast<vtkCVTSurfaceFilter*>(caller);
+      if (filter->GetProgress() > 0.002)
+      {
+        filter->AbortExecuteOn();
+      }
+    });
+  cvt->AddObserver(vtkCommand::ProgressEvent, abortSoon);
+  cvt->Update();
+  EXPECT_LT(cvt->GetHistoryOutput()->GetNumberOfRows(), 20);
+}
+
 TEST(SurfaceFilter, SphereRemeshIsClosedWithEulerCharacteristicTwo)
 {
   vtkNew<vtkCVTGeometryImageSource> source;
