@@ -16,9 +16,9 @@
 #include "vtkCVTCollectFS.h"
 #include "vtkCVTJumpFloodFS.h"
 #include "vtkCVTLloydFS.h"
+#include "vtkCVTPassThroughFS.h"
 #include "vtkCVTReduceFS.h"
 #include "vtkCVTReduceVS.h"
-#include "vtkCVTSeedFS.h"
 #include "vtkCVTSeedVS.h"
 #include "vtkCVTSplitPixelsFS.h"
 
@@ -308,7 +308,7 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   // Seed: clear to "no site", then one point per site (lowest id wins a shared pixel), then
   // a second chance in a free neighbouring pixel for the sites that lost theirs.
   vtkShaderProgram* seed =
-    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSeedVS, vtkCVTSeedFS, "");
+    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSeedVS, vtkCVTPassThroughFS, "");
   if (!seed)
   {
     state->PopFramebufferBindings();

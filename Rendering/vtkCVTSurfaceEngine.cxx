@@ -13,8 +13,10 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-#include "vtkCVTSeedFS.h"
+#include "vtkCVTPassThroughFS.h"
 #include "vtkCVTSurfaceJumpFloodFS.h"
+#include "vtkCVTSurfaceNearestFS.h"
+#include "vtkCVTSurfaceNearestVS.h"
 #include "vtkCVTSurfaceReduceFS.h"
 #include "vtkCVTSurfaceReduceVS.h"
 #include "vtkCVTSurfaceSeedVS.h"
@@ -46,29 +48,42 @@ struct vtkCVTSurfaceEngine::Internals
   vtkNew<vtkTextureObject> Sites;
   vtkNew<vtkTextureObject> Sums;
   vtkNew<vtkTextureObject> Energy;
+  vtkNew<vtkTextureObject> Targets;        // constrained centroids: slot per site
+  vtkNew<vtkTextureObject> NearestPoints;  // per pixel: (point, distance)
+  vtkNew<vtkTextureObject> NearestCorners; // per pixel: pixel index of that point
+  vtkNew<vtkTextureObject> Nearest;        // slot per site: (point, pixel index)
   vtkNew<vtkOpenGLFramebufferObject> SeedsFramebuffer[2];
   vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
+  vtkNew<vtkOpenGLFramebufferObject> NearestPixelsFramebuffer;
+  vtkNew<vtkOpenGLFramebufferObject> NearestFramebuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> NearestQuad;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray;
   std::unique_ptr<vtkOpenGLQuadHelper> JumpFloodQuad;
   int CurrentSeeds = 0;
 
   void Release(vtkOpenGLRenderWindow* window)
   {
-    for (vtkTextureObject* t : { this->Positions.Get(), this->Weights.Get(), this->Seeds[0].Get(),
-           this->Seeds[1].Get(), this->Sites.Get(), this->Sums.Get(), this->Energy.Get() })
+    for (vtkTextureObject* t :
+      { this->Positions.Get(), this->Weights.Get(), this->Seeds[0].Get(), this->Seeds[1].Get(),
+        this->Sites.Get(), this->Sums.Get(), this->Energy.Get(), this->Targets.Get(),
+        this->NearestPoints.Get(), this->NearestCorners.Get(), this->Nearest.Get() })
     {
       t->ReleaseGraphicsResources(window);
     }
     for (vtkOpenGLFramebufferObject* f : { this->SeedsFramebuffer[0].Get(),
-           this->SeedsFramebuffer[1].Get(), this->SumsFramebuffer.Get() })
+           this->SeedsFramebuffer[1].Get(), this->SumsFramebuffer.Get(),
+           this->NearestPixelsFramebuffer.Get(), this->NearestFramebuffer.Get() })
     {
       f->ReleaseGraphicsResources(window);
     }
     this->EmptyVertexArray->ReleaseGraphicsResources();
-    if (this->JumpFloodQuad)
+    for (auto* quad : { &this->JumpFloodQuad, &this->NearestQuad })
     {
-      this->JumpFloodQuad->ReleaseGraphicsResources(window);
-      this->JumpFloodQuad.reset();
+      if (*quad)
+      {
+        (*quad)->ReleaseGraphicsResources(window);
+        quad->reset();
+      }
     }
   }
 };
@@ -169,11 +184,27 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
     ok = AllocateFloatTexture(in.Seeds[i], window, image.Width, image.Height, 4) &&
       AttachTargets(in.SeedsFramebuffer[i], window, in.Seeds[i], nullptr, true);
   }
+  ok = ok && AllocateFloatTexture(in.NearestPoints, window, image.Width, image.Height, 4) &&
+    AllocateFloatTexture(in.NearestCorners, window, image.Width, image.Height, 1) &&
+    AttachTargets(in.NearestPixelsFramebuffer, window, in.NearestPoints, in.NearestCorners);
   if (!ok)
   {
     in.Release(window);
     return this->Fail("the GPU could not allocate the geometry image textures");
   }
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      lo[c] = std::min(lo[c], static_cast<double>(image.Position[3 * p + c]));
+      hi[c] = std::max(hi[c], static_cast<double>(image.Position[3 * p + c]));
+    }
+  }
+  this->Diagonal = std::max(1e-30,
+    std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+      (hi[2] - lo[2]) * (hi[2] - lo[2])));
   return this->CheckGLError("geometry image set-up");
 }
 
@@ -217,7 +248,9 @@ bool vtkCVTSurfaceEngine::SetSites(
   {
     if (!AllocateFloatTexture(in.Sums, window, slotWidth, slotHeight, 4) ||
       !AllocateFloatTexture(in.Energy, window, slotWidth, slotHeight, 1) ||
-      !AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Energy))
+      !AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Energy) ||
+      !AllocateFloatTexture(in.Nearest, window, slotWidth, slotHeight, 4) ||
+      !AttachTargets(in.NearestFramebuffer, window, in.Nearest, nullptr, true))
     {
       return this->Fail("the GPU could not allocate the reduction targets");
     }
@@ -254,7 +287,7 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
 
   // Seed: each site in its pixel, the lowest id winning a shared pixel.
   vtkShaderProgram* seed =
-    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSurfaceSeedVS, vtkCVTSeedFS, "");
+    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSurfaceSeedVS, vtkCVTPassThroughFS, "");
   vtkShaderProgram* jump =
     seed ? ReadyQuad(in.JumpFloodQuad, window, vtkCVTSurfaceJumpFloodFS) : nullptr;
   if (!seed || !jump)
@@ -390,6 +423,113 @@ bool vtkCVTSurfaceEngine::GetLabels(std::vector<int>& labels)
     labels[p] = static_cast<int>(texels[4 * p + 3]);
   }
   return this->CheckGLError("reading labels back");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::NearestPointsInCells(
+  const std::vector<double>& targets, std::vector<double>& sites, std::vector<long long>& pixels)
+{
+  if (this->NumberOfSites <= 0 || targets.size() != 3 * static_cast<size_t>(this->NumberOfSites) ||
+    sites.size() != targets.size() || pixels.size() != targets.size() / 3)
+  {
+    return this->Fail("NearestPointsInCells needs a labelling and one target per site");
+  }
+  ScopedContext current(this->Context);
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  vtkOpenGLState* state = window->GetState();
+  Internals& in = *this->Internal;
+  std::vector<float> texels(static_cast<size_t>(this->SlotSize[0]) * this->SlotSize[1] * 4, 0.0f);
+  for (int i = 0; i < this->NumberOfSites; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      texels[4 * i + c] = static_cast<float>(targets[3 * i + c]);
+    }
+  }
+  if (!AllocateFloatTexture(
+        in.Targets, window, this->SlotSize[0], this->SlotSize[1], 4, texels.data()))
+  {
+    return this->Fail("the GPU could not allocate the target texture");
+  }
+  vtkShaderProgram* nearest = ReadyQuad(in.NearestQuad, window, vtkCVTSurfaceNearestFS);
+  vtkShaderProgram* scatter = nearest
+    ? window->GetShaderCache()->ReadyShaderProgram(vtkCVTSurfaceNearestVS, vtkCVTPassThroughFS, "")
+    : nullptr;
+  if (!nearest || !scatter)
+  {
+    return this->Fail("the constrained centroid shaders did not compile");
+  }
+
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFunction(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  state->vtkglDisable(GL_BLEND);
+  state->PushFramebufferBindings();
+
+  // Step 1: every pixel's nearest point on its quad's two triangles.
+  window->GetShaderCache()->ReadyShaderProgram(nearest);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
+  in.NearestPixelsFramebuffer->Bind();
+  in.NearestPixelsFramebuffer->ActivateDrawBuffers(2);
+  vtkTextureObject* seeds = in.Seeds[in.CurrentSeeds];
+  seeds->Activate();
+  in.Positions->Activate();
+  in.Targets->Activate();
+  nearest->SetUniformi("seeds", seeds->GetTextureUnit());
+  nearest->SetUniformi("positions", in.Positions->GetTextureUnit());
+  nearest->SetUniformi("targets", in.Targets->GetTextureUnit());
+  nearest->SetUniform2i("gridSize", this->GridSize);
+  nearest->SetUniform2i("slotSize", this->SlotSize);
+  nearest->SetUniform2i("wrap", this->Wrap);
+  in.NearestQuad->Render();
+  in.Targets->Deactivate();
+  in.Positions->Deactivate();
+
+  // Step 2: scatter to the slots, the depth test keeping the nearest point of each cell.
+  window->GetShaderCache()->ReadyShaderProgram(scatter);
+  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
+  in.NearestFramebuffer->Bind();
+  in.NearestFramebuffer->ActivateDrawBuffers(1);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, -1.0f);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  in.NearestPoints->Activate();
+  in.NearestCorners->Activate();
+  scatter->SetUniformi("seeds", seeds->GetTextureUnit());
+  scatter->SetUniformi("nearest", in.NearestPoints->GetTextureUnit());
+  scatter->SetUniformi("corners", in.NearestCorners->GetTextureUnit());
+  scatter->SetUniform2i("gridSize", this->GridSize);
+  scatter->SetUniform2i("slotSize", this->SlotSize);
+  scatter->SetUniformf("maximumDistance", static_cast<float>(2.0 * this->Diagonal));
+  in.EmptyVertexArray->Bind();
+  glDrawArrays(GL_POINTS, 0, this->GridSize[0] * this->GridSize[1]);
+  in.EmptyVertexArray->Release();
+  in.NearestCorners->Deactivate();
+  in.NearestPoints->Deactivate();
+  seeds->Deactivate();
+  state->PopFramebufferBindings();
+
+  ReadTarget(
+    in.NearestFramebuffer, window, 0, this->SlotSize[0], this->SlotSize[1], GL_RGBA, texels.data());
+  for (int i = 0; i < this->NumberOfSites; ++i)
+  {
+    if (texels[4 * i + 3] < 0.0f)
+    {
+      continue; // an empty cell: the site stays
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      sites[3 * i + c] = texels[4 * i + c];
+    }
+    pixels[i] = static_cast<long long>(texels[4 * i + 3]);
+  }
+  return this->CheckGLError("constrained centroids");
 }
 
 //------------------------------------------------------------------------------

@@ -37,6 +37,8 @@ public:
   bool SetSites(const std::vector<double>& sites, const std::vector<long long>& pixels) override;
   bool ComputeCellSums(cvt::CellSums& sums) override;
   bool GetLabels(std::vector<int>& labels) override;
+  bool NearestPointsInCells(const std::vector<double>& targets, std::vector<double>& sites,
+    std::vector<long long>& pixels) override;
   ///@}
 
   ///@{
@@ -65,6 +67,7 @@ private:
   bool CheckGLError(const char* where);
 
   int GridSize[2] = { 0, 0 };
+  double Diagonal = 1.0; // of the surface's bounding box: the depth scale of nearest points
   int Wrap[2] = { 0, 0 };
   int SlotSize[2] = { 0, 0 };
   int NumberOfSites = 0;

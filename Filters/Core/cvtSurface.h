@@ -68,6 +68,11 @@ public:
   /// about the site and energy, weighted by the area weights.
   virtual bool ComputeCellSums(CellSums& sums) = 0;
   virtual bool GetLabels(std::vector<int>& labels) = 0;
+  /// For every site i, the point of its cell (last labelling) nearest to targets[i], and the
+  /// pixel holding it: the constrained centroid when the target is the 3D centroid (Rong 4.3;
+  /// cvt::NearestPointsInCells is the CPU reference). Sites whose cell is empty keep theirs.
+  virtual bool NearestPointsInCells(const std::vector<double>& targets, std::vector<double>& sites,
+    std::vector<long long>& pixels) = 0;
   const std::string& GetLastError() const { return this->LastError; }
 
 protected:

@@ -173,7 +173,10 @@ public:
     }
     std::vector<double> sites = this->Run.Sites;
     std::vector<long long> pixels = this->Run.Pixels;
-    NearestPointsInCells(this->Run.Image, this->Run.Labels, targets, sites, pixels);
+    if (!this->Run.Engine.NearestPointsInCells(targets, sites, pixels))
+    {
+      throw StopOptimizer{ this->Run.Engine.GetLastError(), true };
+    }
     const double energy = this->Run.Evaluate(sites, pixels);
     gradient.resize(x.size());
     for (size_t i = 0; i < pixels.size(); ++i)
@@ -238,7 +241,10 @@ bool RunSurfaceLloyd(SurfaceEngine& engine, const GeometryImage& image,
           centroids[3 * i + 2] += run.Sums.MomentZ[i] / run.Sums.Mass[i];
         }
       }
-      NearestPointsInCells(image, run.Labels, centroids, current, currentPixels);
+      if (!engine.NearestPointsInCells(centroids, current, currentPixels))
+      {
+        throw StopOptimizer{ engine.GetLastError(), true };
+      }
     }
   }
   catch (const StopOptimizer& stop)

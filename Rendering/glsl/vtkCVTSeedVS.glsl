@@ -11,14 +11,14 @@ uniform ivec2 slotSize;
 uniform ivec2 gridSize;
 uniform int numberOfSites;
 uniform int secondChance; // 0: first pass; 1: re-place the sites that lost their pixel
-out vec4 seedValue;
+out vec4 result;
 
 void main()
 {
   int i = gl_VertexID;
   vec2 site = texelFetch(sites, ivec2(i % slotSize.x, i / slotSize.x), 0).xy;
   ivec2 pixel = clamp(ivec2(floor(site)), ivec2(0), gridSize - 1);
-  seedValue = vec4(site, float(i), 0.0);
+  result = vec4(site, float(i), 0.0);
   float depth = (float(i) + 0.5) / float(numberOfSites) * 2.0 - 1.0; // lower id wins
   if (secondChance == 1)
   {

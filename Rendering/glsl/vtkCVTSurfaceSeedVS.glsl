@@ -4,7 +4,7 @@ uniform sampler2D sites; // slot i: (x, y, z, pixel index)
 uniform ivec2 slotSize;
 uniform ivec2 gridSize;
 uniform int numberOfSites;
-out vec4 seedValue;
+out vec4 result;
 
 void main()
 {
@@ -14,5 +14,5 @@ void main()
   vec2 p = vec2(pixel % gridSize.x, pixel / gridSize.x) + 0.5;
   float depth = (float(i) + 0.5) / float(numberOfSites) * 2.0 - 1.0; // lower id wins a pixel
   gl_Position = vec4(p / vec2(gridSize) * 2.0 - 1.0, depth, 1.0);
-  seedValue = vec4(site.xyz, float(i));
+  result = vec4(site.xyz, float(i));
 }

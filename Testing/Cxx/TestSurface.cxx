@@ -167,6 +167,44 @@ TEST(SurfaceEngine, LabelsAndSumsMatchTheCpu)
   }
 }
 
+TEST(SurfaceEngine, ConstrainedCentroidsMatchTheCpu)
+{
+  const cvt::GeometryImage gi = ToGeometryImage(Torus(128, 64));
+  std::vector<long long> pixels;
+  const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 150, 8, pixels);
+  vtkNew<vtkCVTSurfaceEngine> engine;
+  ASSERT_TRUE(engine->SetGeometryImage(gi));
+  ASSERT_TRUE(engine->SetSites(sites, pixels));
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine->ComputeCellSums(sums));
+  std::vector<int> labels;
+  ASSERT_TRUE(engine->GetLabels(labels));
+  // Targets: the cells' 3D centroids, off the surface.
+  std::vector<double> centroids = sites;
+  for (size_t i = 0; i < 150; ++i)
+  {
+    centroids[3 * i] += sums.MomentX[i] / sums.Mass[i];
+    centroids[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
+    centroids[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
+  }
+  std::vector<double> gpuSites = sites, cpuSites = sites;
+  std::vector<long long> gpuPixels = pixels, cpuPixels = pixels;
+  ASSERT_TRUE(engine->NearestPointsInCells(centroids, gpuSites, gpuPixels))
+    << engine->GetLastError();
+  cvt::NearestPointsInCells(gi, labels, centroids, cpuSites, cpuPixels);
+  int samePixel = 0;
+  for (size_t i = 0; i < 150; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      // float on the GPU, double on the CPU: near-ties between triangles may pick either
+      EXPECT_NEAR(gpuSites[3 * i + c], cpuSites[3 * i + c], 1e-3) << "site " << i;
+    }
+    samePixel += gpuPixels[i] == cpuPixels[i] ? 1 : 0;
+  }
+  EXPECT_GE(samePixel, 145);
+}
+
 TEST(SurfaceFilter, TorusWith600SitesAndItsRemesh)
 {
   vtkNew<vtkCVTGeometryImageSource> source;
@@ -227,7 +265,8 @@ TEST(SurfaceFilter, AbortStopsTheIterations)
   cvt->SetMaximumNumberOfIterations(1000);
   cvt->SetTolerance(0.0);
   vtkNew<vtkCallbackCommand> abortSoon;
-  abortSoon->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
+  abortSoon->SetCallback(
+    [](vtkObject* caller, unsigned long, void*, void*)
     {
       auto* filter = static_cast<vtkCVTSurfaceFilter*>(caller);
       if (filter->GetProgress() > 0.002)
