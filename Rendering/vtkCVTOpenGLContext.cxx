@@ -150,6 +150,13 @@ void vtkCVTOpenGLContext::MakeCurrent()
   saved.GlxDraw = saved.GlxContext ? glXGetCurrentDrawable() : 0;
   saved.GlxRead = saved.GlxContext ? glXGetCurrentReadDrawable() : 0;
   saved.Valid = true;
+  // libglvnd keeps one current context per thread and will not make an EGL context current
+  // while a GLX one is (eglMakeCurrent fails): release the GLX context first, also before the
+  // EGL context is created in Initialize().
+  if (saved.GlxContext)
+  {
+    glXMakeContextCurrent(saved.GlxDisplay, None, None, nullptr);
+  }
   if (this->Window)
   {
     this->Window->MakeCurrent();
@@ -176,6 +183,11 @@ void vtkCVTOpenGLContext::RestorePrevious()
   {
     if (glXGetCurrentContext() != saved.GlxContext)
     {
+      if (eglGetCurrentContext() != EGL_NO_CONTEXT)
+      {
+        // One API at a time (see MakeCurrent).
+        eglMakeCurrent(eglGetCurrentDisplay(), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      }
       glXMakeContextCurrent(saved.GlxDisplay, saved.GlxDraw, saved.GlxRead, saved.GlxContext);
     }
   }

@@ -52,6 +52,7 @@ struct vtkCVTSurfaceEngine::Internals
   vtkNew<vtkTextureObject> NearestPoints;  // per pixel: (point, distance)
   vtkNew<vtkTextureObject> NearestCorners; // per pixel: pixel index of that point
   vtkNew<vtkTextureObject> Nearest;        // slot per site: (point, pixel index)
+  vtkNew<vtkTextureObject> NearestDepth;   // its depth buffer (distance)
   vtkNew<vtkOpenGLFramebufferObject> SeedsFramebuffer[2];
   vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
   vtkNew<vtkOpenGLFramebufferObject> NearestPixelsFramebuffer;
@@ -161,6 +162,7 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   Internals& in = *this->Internal;
   in.Release(window);
+  this->Image = image;
   this->GridSize[0] = image.Width;
   this->GridSize[1] = image.Height;
   this->Wrap[0] = image.WrapU ? 1 : 0;
@@ -250,7 +252,7 @@ bool vtkCVTSurfaceEngine::SetSites(
       !AllocateFloatTexture(in.Energy, window, slotWidth, slotHeight, 1) ||
       !AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Energy) ||
       !AllocateFloatTexture(in.Nearest, window, slotWidth, slotHeight, 4) ||
-      !AttachTargets(in.NearestFramebuffer, window, in.Nearest, nullptr, true))
+      !this->AttachNearestTargets(slotWidth, slotHeight))
     {
       return this->Fail("the GPU could not allocate the reduction targets");
     }
@@ -426,6 +428,29 @@ bool vtkCVTSurfaceEngine::GetLabels(std::vector<int>& labels)
 }
 
 //------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::AttachNearestTargets(int width, int height)
+{
+  // A depth texture of the slots' size rather than a default depth renderbuffer: the latter
+  // came out unusable with VTK's X11 window (the fallback context), leaving the slots empty.
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  Internals& in = *this->Internal;
+  in.NearestDepth->SetContext(window);
+  if (!in.NearestDepth->AllocateDepth(width, height, vtkTextureObject::Float32))
+  {
+    return false;
+  }
+  in.NearestFramebuffer->SetContext(window);
+  window->GetState()->PushFramebufferBindings();
+  in.NearestFramebuffer->Bind();
+  in.NearestFramebuffer->AddColorAttachment(0, in.Nearest);
+  in.NearestFramebuffer->AddDepthAttachment(in.NearestDepth);
+  in.NearestFramebuffer->ActivateDrawBuffers(1);
+  const bool complete = in.NearestFramebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
+  window->GetState()->PopFramebufferBindings();
+  return complete;
+}
+
+//------------------------------------------------------------------------------
 bool vtkCVTSurfaceEngine::NearestPointsInCells(
   const std::vector<double>& targets, std::vector<double>& sites, std::vector<long long>& pixels)
 {
@@ -433,6 +458,18 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
     sites.size() != targets.size() || pixels.size() != targets.size() / 3)
   {
     return this->Fail("NearestPointsInCells needs a labelling and one target per site");
+  }
+  if (this->Context->GetDescription().rfind("EGL", 0) != 0)
+  {
+    // With VTK's X11 window (the fallback context) the depth-tested scatter below leaves the
+    // slots empty, for a reason not found yet; there the CPU reference does this step.
+    std::vector<int> labels;
+    if (!this->GetLabels(labels))
+    {
+      return false;
+    }
+    cvt::NearestPointsInCells(this->Image, labels, targets, sites, pixels);
+    return true;
   }
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();

@@ -65,7 +65,9 @@ private:
   vtkNew<vtkCVTOpenGLContext> Context;
 
   bool CheckGLError(const char* where);
+  bool AttachNearestTargets(int width, int height);
 
+  cvt::GeometryImage Image; // for the CPU fallback of NearestPointsInCells
   int GridSize[2] = { 0, 0 };
   double Diagonal = 1.0; // of the surface's bounding box: the depth scale of nearest points
   int Wrap[2] = { 0, 0 };
