@@ -181,12 +181,7 @@ int vtkCVTImageFilter::RequestUpdateExtent(
 {
   // The whole domain takes part in every cell, so always ask for all of it.
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
-  {
-    inInfo->Set(SDDP::UPDATE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
-    inInfo->Set(SDDP::EXACT_EXTENT(), 1);
-  }
+  cvtvtk::RequestWholeExtent(inputVector[0]->GetInformationObject(0));
   if (vtkInformation* sitesInfo = inputVector[1]->GetInformationObject(0))
   {
     sitesInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
@@ -362,32 +357,8 @@ int vtkCVTImageFilter::RequestData(
   }
 
   // --- Outputs.
-  const vtkIdType n = static_cast<vtkIdType>(result.Sites.size() / 2);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(n);
-  vtkNew<vtkCellArray> vertices;
-  vtkNew<vtkIntArray> siteIds;
-  siteIds->SetName("SiteId");
-  siteIds->SetNumberOfValues(n);
-  vtkNew<vtkDoubleArray> mass, energy;
-  mass->SetName("Mass");
-  mass->SetNumberOfValues(n);
-  energy->SetName("Energy");
-  energy->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->SetPoint(i, result.Sites[2 * i], result.Sites[2 * i + 1], origin[2]);
-    vertices->InsertNextCell(1, &i);
-    siteIds->SetValue(i, static_cast<int>(i));
-    mass->SetValue(i, result.Sums.Mass[i]);
-    energy->SetValue(i, result.Sums.Energy[i]);
-  }
-  sitesOut->SetPoints(points);
-  sitesOut->SetVerts(vertices);
-  sitesOut->GetPointData()->AddArray(siteIds);
-  sitesOut->GetPointData()->AddArray(mass);
-  sitesOut->GetPointData()->AddArray(energy);
+  vtkSmartPointer<vtkPoints> points =
+    cvtvtk::FillSites(sitesOut, result.Sites, 2, origin[2], result.Sums);
   vtkFieldData* fields = sitesOut->GetFieldData();
   cvtvtk::AddFieldValue(fields, "Energy", result.Sums.TotalEnergy());
   cvtvtk::AddFieldValue(fields, "GradientNorm", result.Sums.GradientNorm());
@@ -425,7 +396,7 @@ int vtkCVTImageFilter::RequestData(
   dualOut->SetPoints(points);
   dualOut->SetPolys(DualTriangles(sitesOut, grid));
   vtkNew<vtkIntArray> dualIds;
-  dualIds->DeepCopy(siteIds);
+  dualIds->DeepCopy(sitesOut->GetPointData()->GetArray("SiteId"));
   dualOut->GetPointData()->AddArray(dualIds);
 
   cvtvtk::FillHistoryTable(historyOut, result.History);

@@ -2,13 +2,20 @@
 
 #include "cvtSurface.h"
 
+#include "cvtEngine.h"
+
+#include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
@@ -32,6 +39,46 @@ void AddFieldString(vtkFieldData* fields, const char* name, const std::string& v
   array->SetName(name);
   array->InsertNextValue(value);
   fields->AddArray(array);
+}
+
+vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<double>& sites,
+  int dimensions, double z, const cvt::CellSums& sums)
+{
+  const vtkIdType n = static_cast<vtkIdType>(sites.size() / dimensions);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkIntArray> siteIds;
+  siteIds->SetName("SiteId");
+  vtkNew<vtkDoubleArray> mass, energy;
+  mass->SetName("Mass");
+  energy->SetName("Energy");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double* x = &sites[dimensions * i];
+    points->SetPoint(i, x[0], x[1], dimensions == 3 ? x[2] : z);
+    vertices->InsertNextCell(1, &i);
+    siteIds->InsertNextValue(static_cast<int>(i));
+    mass->InsertNextValue(sums.Mass[i]);
+    energy->InsertNextValue(sums.Energy[i]);
+  }
+  output->SetPoints(points);
+  output->SetVerts(vertices);
+  output->GetPointData()->AddArray(siteIds);
+  output->GetPointData()->AddArray(mass);
+  output->GetPointData()->AddArray(energy);
+  return points;
+}
+
+void RequestWholeExtent(vtkInformation* inputInformation)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (inputInformation->Has(SDDP::WHOLE_EXTENT()))
+  {
+    inputInformation->Set(SDDP::UPDATE_EXTENT(), inputInformation->Get(SDDP::WHOLE_EXTENT()), 6);
+    inputInformation->Set(SDDP::EXACT_EXTENT(), 1);
+  }
 }
 
 void FillHistoryTable(vtkTable* table, const std::vector<cvt::HistoryEntry>& history)

@@ -7,11 +7,17 @@
 #include <string>
 #include <vector>
 
+#include "vtkSmartPointer.h" // for return values
+
 class vtkFieldData;
 class vtkImageData;
+class vtkInformation;
+class vtkPoints;
+class vtkPolyData;
 class vtkTable;
 namespace cvt
 {
+struct CellSums;
 struct GeometryImage;
 }
 
@@ -23,6 +29,14 @@ void AddFieldValue(vtkFieldData* fields, const char* name, double value);
 
 /// A one-value string array named `name` in `fields`.
 void AddFieldString(vtkFieldData* fields, const char* name, const std::string& value);
+
+/// The sites output: one vertex per site (flat `sites`, 2 or 3 coordinates each; z for 2D),
+/// point arrays SiteId, Mass, Energy. Returns the points, for the dual or remesh to share.
+vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<double>& sites,
+  int dimensions, double z, const cvt::CellSums& sums);
+
+/// Asks the upstream image for its whole extent: every pixel takes part in every cell.
+void RequestWholeExtent(vtkInformation* inputInformation);
 
 /// Columns iteration, evaluations, energy, gradient_norm, seconds.
 void FillHistoryTable(vtkTable* table, const std::vector<cvt::HistoryEntry>& history);

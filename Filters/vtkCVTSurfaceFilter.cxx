@@ -106,13 +106,7 @@ int vtkCVTSurfaceFilter::RequestInformation(
 int vtkCVTSurfaceFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
-  {
-    inInfo->Set(SDDP::UPDATE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
-    inInfo->Set(SDDP::EXACT_EXTENT(), 1);
-  }
+  cvtvtk::RequestWholeExtent(inputVector[0]->GetInformationObject(0));
   return 1;
 }
 
@@ -259,29 +253,8 @@ int vtkCVTSurfaceFilter::RequestData(
   }
 
   // --- Outputs.
-  const vtkIdType n = static_cast<vtkIdType>(result.Pixels.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(n);
-  vtkNew<vtkCellArray> vertices;
-  vtkNew<vtkIntArray> siteIds;
-  siteIds->SetName("SiteId");
-  vtkNew<vtkDoubleArray> mass, energy;
-  mass->SetName("Mass");
-  energy->SetName("Energy");
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->SetPoint(i, result.Sites[3 * i], result.Sites[3 * i + 1], result.Sites[3 * i + 2]);
-    vertices->InsertNextCell(1, &i);
-    siteIds->InsertNextValue(static_cast<int>(i));
-    mass->InsertNextValue(result.Sums.Mass[i]);
-    energy->InsertNextValue(result.Sums.Energy[i]);
-  }
-  sitesOut->SetPoints(points);
-  sitesOut->SetVerts(vertices);
-  sitesOut->GetPointData()->AddArray(siteIds);
-  sitesOut->GetPointData()->AddArray(mass);
-  sitesOut->GetPointData()->AddArray(energy);
+  vtkSmartPointer<vtkPoints> points =
+    cvtvtk::FillSites(sitesOut, result.Sites, 3, 0.0, result.Sums);
   vtkFieldData* fields = sitesOut->GetFieldData();
   cvtvtk::AddFieldValue(fields, "Energy", result.Sums.TotalEnergy());
   cvtvtk::AddFieldValue(
@@ -330,7 +303,7 @@ int vtkCVTSurfaceFilter::RequestData(
     remeshFields->AddArray(counts);
   }
   vtkNew<vtkIntArray> remeshIds;
-  remeshIds->DeepCopy(siteIds);
+  remeshIds->DeepCopy(sitesOut->GetPointData()->GetArray("SiteId"));
   remeshOut->GetPointData()->AddArray(remeshIds);
 
   cvtvtk::FillHistoryTable(historyOut, result.History);

@@ -140,17 +140,8 @@ std::string vtkCVTOpenGLEngine::GetContextDescription() const
 //------------------------------------------------------------------------------
 bool vtkCVTOpenGLEngine::CheckGLError(const char* where)
 {
-  GLenum error = glGetError();
-  if (error == GL_NO_ERROR)
-  {
-    return true;
-  }
-  while (glGetError() != GL_NO_ERROR)
-  {
-  }
-  std::ostringstream msg;
-  msg << "OpenGL error 0x" << std::hex << error << " during " << where;
-  return this->Fail(msg.str());
+  const std::string message = GLErrorMessage(where);
+  return message.empty() || this->Fail(message);
 }
 
 //------------------------------------------------------------------------------

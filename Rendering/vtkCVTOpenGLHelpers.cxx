@@ -10,6 +10,8 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <cstdio>
+
 namespace cvtgl
 {
 
@@ -86,6 +88,34 @@ void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* 
   state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, format, GL_FLOAT, out);
   state->PopFramebufferBindings();
+}
+
+std::string GLErrorMessage(const char* where)
+{
+  const GLenum error = glGetError();
+  if (error == GL_NO_ERROR)
+  {
+    return std::string();
+  }
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  char code[16];
+  std::snprintf(code, sizeof(code), "0x%x", error);
+  return std::string("OpenGL error ") + code + " during " + where;
+}
+
+void BindForNearestScatter(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window)
+{
+  vtkOpenGLState* state = window->GetState();
+  framebuffer->Bind();
+  framebuffer->ActivateDrawBuffers(1);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, -1.0f);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
 } // namespace cvtgl

@@ -3,6 +3,7 @@
 #define vtkCVTOpenGLHelpers_h
 
 #include <memory>
+#include <string>
 
 class vtkCVTOpenGLContext;
 class vtkOpenGLFramebufferObject;
@@ -44,6 +45,14 @@ vtkShaderProgram* ReadyQuad(
 /// Reads a float render target back (format GL_RGBA or GL_RED).
 void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
   int attachment, int width, int height, unsigned int format, float* out);
+
+/// Empty when OpenGL reports no error, else "OpenGL error 0x... during <where>"; clears the
+/// error flags.
+std::string GLErrorMessage(const char* where);
+
+/// Binds `framebuffer` for drawing into its first target with a less-than depth test, and
+/// clears it to (0, 0, 0, -1) and depth 1: the set-up of every "keep the nearest" scatter.
+void BindForNearestScatter(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window);
 
 } // namespace cvtgl
 

@@ -35,13 +35,6 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
     this->LastError = "the labels image has no SiteId array";
     return nullptr;
   }
-  vtkNew<vtkCVTOpenGLContext> context;
-  if (!context->Initialize())
-  {
-    this->LastError = context->GetLastError();
-    return nullptr;
-  }
-  context->MakeCurrent();
 
   double bounds[6];
   labels->GetBounds(bounds);
@@ -111,13 +104,20 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
   camera->SetParallelScale(0.5 * height);
   renderer->ResetCameraClippingRange();
 
-  return this->Snapshot(context, renderer, sizeX, sizeY);
+  return this->Snapshot(renderer, sizeX, sizeY);
 }
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Snapshot(
-  vtkCVTOpenGLContext* context, vtkRenderer* renderer, int width, int height)
+  vtkRenderer* renderer, int width, int height)
 {
+  vtkNew<vtkCVTOpenGLContext> context;
+  if (!context->Initialize())
+  {
+    this->LastError = context->GetLastError();
+    return nullptr;
+  }
+  context->MakeCurrent();
   vtkOpenGLRenderWindow* window = context->GetRenderWindow();
   window->SetSize(width, height);
   window->AddRenderer(renderer);
@@ -144,13 +144,6 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
     this->LastError = "the mesh has no triangles";
     return nullptr;
   }
-  vtkNew<vtkCVTOpenGLContext> context;
-  if (!context->Initialize())
-  {
-    this->LastError = context->GetLastError();
-    return nullptr;
-  }
-  context->MakeCurrent();
 
   // One pastel colour per triangle, from a fixed seed.
   vtkNew<vtkPolyData> coloured;
@@ -187,7 +180,7 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
   camera->SetViewUp(0.0, 0.0, 1.0);
   renderer->ResetCamera();
   camera->Zoom(1.5);
-  return this->Snapshot(context, renderer, this->Size, (this->Size * 3) / 4);
+  return this->Snapshot(renderer, this->Size, (this->Size * 3) / 4);
 }
 
 //------------------------------------------------------------------------------

@@ -15,7 +15,6 @@
 
 #include <string> // for std::string
 
-class vtkCVTOpenGLContext;
 class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
@@ -65,10 +64,10 @@ protected:
 
 private:
   vtkCVTSceneRenderer(const vtkCVTSceneRenderer&) = delete;
-  /** Renders the renderer's props in the headless window and reads the pixels back. */
-  vtkSmartPointer<vtkImageData> Snapshot(
-    vtkCVTOpenGLContext* context, vtkRenderer* renderer, int width, int height);
   void operator=(const vtkCVTSceneRenderer&) = delete;
+
+  /** Renders the renderer's props in a headless window and reads the pixels back. */
+  vtkSmartPointer<vtkImageData> Snapshot(vtkRenderer* renderer, int width, int height);
 
   int Size = 800;
   bool ShowCells = true;

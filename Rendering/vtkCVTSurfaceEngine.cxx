@@ -120,17 +120,8 @@ std::string vtkCVTSurfaceEngine::GetContextDescription() const
 //------------------------------------------------------------------------------
 bool vtkCVTSurfaceEngine::CheckGLError(const char* where)
 {
-  const GLenum error = glGetError();
-  if (error == GL_NO_ERROR)
-  {
-    return true;
-  }
-  while (glGetError() != GL_NO_ERROR)
-  {
-  }
-  std::ostringstream msg;
-  msg << "OpenGL error 0x" << std::hex << error << " during " << where;
-  return this->Fail(msg.str());
+  const std::string message = GLErrorMessage(where);
+  return message.empty() || this->Fail(message);
 }
 
 //------------------------------------------------------------------------------
@@ -299,14 +290,7 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
   }
   window->GetShaderCache()->ReadyShaderProgram(seed);
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
-  in.SeedsFramebuffer[0]->Bind();
-  in.SeedsFramebuffer[0]->ActivateDrawBuffers(1);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, -1.0f);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  BindForNearestScatter(in.SeedsFramebuffer[0], window);
   in.Sites->Activate();
   seed->SetUniformi("sites", in.Sites->GetTextureUnit());
   seed->SetUniform2i("slotSize", this->SlotSize);
@@ -528,14 +512,7 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   // Step 2: scatter to the slots, the depth test keeping the nearest point of each cell.
   window->GetShaderCache()->ReadyShaderProgram(scatter);
   state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
-  in.NearestFramebuffer->Bind();
-  in.NearestFramebuffer->ActivateDrawBuffers(1);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, -1.0f);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  BindForNearestScatter(in.NearestFramebuffer, window);
   in.NearestPoints->Activate();
   in.NearestCorners->Activate();
   scatter->SetUniformi("seeds", seeds->GetTextureUnit());

@@ -85,10 +85,25 @@ struct CellSums
   }
 };
 
+/// The error reporting shared by the engines: methods return false and leave a message.
+class CVTCORE_EXPORT EngineErrors
+{
+public:
+  const std::string& GetLastError() const { return this->LastError; }
+
+protected:
+  bool Fail(const std::string& message)
+  {
+    this->LastError = message;
+    return false;
+  }
+  std::string LastError;
+};
+
 /// What an engine must do for the optimisers. Sites are flat (x0, y0, x1, y1, ...) physical
 /// coordinates inside the grid's domain. Every method returns false on failure and leaves a
 /// message in GetLastError().
-class CVTCORE_EXPORT Engine
+class CVTCORE_EXPORT Engine : public EngineErrors
 {
 public:
   virtual ~Engine() = default;
@@ -104,16 +119,6 @@ public:
   virtual bool GetSites(std::vector<double>& sites) = 0;
   /// Nearest-site label of every pixel centre (-1 where none), row-major.
   virtual bool GetLabels(std::vector<int>& labels) = 0;
-
-  const std::string& GetLastError() const { return this->LastError; }
-
-protected:
-  bool Fail(const std::string& message)
-  {
-    this->LastError = message;
-    return false;
-  }
-  std::string LastError;
 };
 
 } // namespace cvt

@@ -19,13 +19,6 @@ namespace
 using Clock = std::chrono::steady_clock;
 using Vector = Eigen::VectorXd;
 
-/// Thrown from inside the solver to end it: a stop condition, or an engine failure.
-struct StopOptimizer
-{
-  std::string Reason;
-  bool EngineFailed;
-};
-
 /// The CVT energy seen by the solver, in coordinates scaled to the unit box so that the
 /// solver's unit first step means the same for any physical extent of the domain.
 class Objective

@@ -58,7 +58,7 @@ CVTCORE_EXPORT std::vector<std::array<int, 3>> DualTriangles(
 
 /// What a surface engine must do: the 3D counterpart of cvt::Engine. Sites are flat
 /// (x, y, z, ...) points on the surface, each with the pixel that holds it.
-class CVTCORE_EXPORT SurfaceEngine
+class CVTCORE_EXPORT SurfaceEngine : public EngineErrors
 {
 public:
   virtual ~SurfaceEngine() = default;
@@ -73,15 +73,6 @@ public:
   /// cvt::NearestPointsInCells is the CPU reference). Sites whose cell is empty keep theirs.
   virtual bool NearestPointsInCells(const std::vector<double>& targets, std::vector<double>& sites,
     std::vector<long long>& pixels) = 0;
-  const std::string& GetLastError() const { return this->LastError; }
-
-protected:
-  bool Fail(const std::string& message)
-  {
-    this->LastError = message;
-    return false;
-  }
-  std::string LastError;
 };
 
 } // namespace cvt

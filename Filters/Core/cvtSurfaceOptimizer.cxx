@@ -18,12 +18,6 @@ namespace
 using Clock = std::chrono::steady_clock;
 using Vector = Eigen::VectorXd;
 
-struct StopOptimizer
-{
-  std::string Reason;
-  bool EngineFailed;
-};
-
 /// Tangential gradient of site i: -2 M_i minus its component along the normal at the site.
 void TangentialGradient(const GeometryImage& image, const CellSums& sums,
   const std::vector<long long>& pixels, size_t i, double g[3])
