@@ -1,6 +1,6 @@
 #include "cvtLBFGS.h"
 
-#include "cvtReportingLineSearch.h"
+#include "cvtOptimizerSupport.h"
 
 #include <Eigen/Core>
 #include <LBFGSB.h>
@@ -103,30 +103,7 @@ public:
   /// Called after every line search, at the accepted iterate.
   void AcceptIterate(double energy, const Vector& gradient)
   {
-    const int iteration = ++this->Result.Iterations;
-    const double gradientNorm = gradient.norm() / this->Scale;
-    const double before = this->Result.History.back().Energy;
-    this->Record(iteration, energy, gradientNorm);
-    if (this->Progress &&
-      !this->Progress(
-        static_cast<double>(iteration) / std::max(1, this->Options.MaximumNumberOfIterations)))
-    {
-      this->Result.Aborted = true;
-      throw StopOptimizer{ "aborted", false };
-    }
-    if (iteration >= this->Options.MaximumNumberOfIterations)
-    {
-      throw StopOptimizer{ "iteration limit", false };
-    }
-    if (gradientNorm <= this->Options.GradientTolerance * this->Result.History.front().GradientNorm)
-    {
-      throw StopOptimizer{ "gradient tolerance reached", false };
-    }
-    const double decrease = (before - energy) / std::max(std::abs(before), 1e-300);
-    if (this->Options.Tolerance > 0.0 && decrease < this->Options.Tolerance)
-    {
-      throw StopOptimizer{ "relative energy decrease below tolerance", false };
-    }
+    this->Record(this->Result.Iterations + 1, energy, gradient.norm() / this->Scale);
   }
 
   const std::vector<double>& GetLastSites() const { return this->LastSites; }
@@ -140,7 +117,7 @@ private:
     entry.Energy = energy;
     entry.GradientNorm = gradientNorm;
     entry.Seconds = std::chrono::duration<double>(Clock::now() - this->Start).count();
-    this->Result.History.push_back(entry);
+    RecordAndCheck(this->Options, this->Progress, this->Result, entry);
   }
 
   Engine& Engine_;

@@ -1,6 +1,6 @@
 #include "cvtSurfaceOptimizer.h"
 
-#include "cvtReportingLineSearch.h"
+#include "cvtOptimizerSupport.h"
 
 #include <Eigen/Core>
 #include <LBFGSB.h>
@@ -80,32 +80,7 @@ public:
     entry.Energy = energy;
     entry.GradientNorm = TangentialGradientNorm(this->Image, this->Sums, this->Pixels);
     entry.Seconds = std::chrono::duration<double>(Clock::now() - this->Start).count();
-    const double before =
-      this->Result.History.empty() ? energy : this->Result.History.back().Energy;
-    this->Result.History.push_back(entry);
-    this->Result.Iterations = iteration;
-    if (this->Progress &&
-      !this->Progress(
-        static_cast<double>(iteration) / std::max(1, this->Options.MaximumNumberOfIterations)))
-    {
-      this->Result.Aborted = true;
-      throw StopOptimizer{ "aborted", false };
-    }
-    if (iteration >= this->Options.MaximumNumberOfIterations)
-    {
-      throw StopOptimizer{ "iteration limit", false };
-    }
-    if (iteration > 0 &&
-      entry.GradientNorm <=
-        this->Options.GradientTolerance * this->Result.History.front().GradientNorm)
-    {
-      throw StopOptimizer{ "gradient tolerance reached", false };
-    }
-    const double decrease = (before - energy) / std::max(std::abs(before), 1e-300);
-    if (iteration > 0 && this->Options.Tolerance > 0.0 && decrease < this->Options.Tolerance)
-    {
-      throw StopOptimizer{ "relative energy decrease below tolerance", false };
-    }
+    RecordAndCheck(this->Options, this->Progress, this->Result, entry);
   }
 
   /// Ends a run: the stop reason, and the engine relabelled for the best sites.
