@@ -340,6 +340,37 @@ TEST(ImageFilter, LBFGSIsTheDefaultAndReportsExactEnergyAndQuality)
   EXPECT_GT(lloyd->GetSitesOutput()->GetFieldData()->GetArray("Energy")->GetTuple1(0), energy);
 }
 
+TEST(ImageFilter, EngineAndSolverOptionsReachTheEngine)
+{
+  // Whole pixels (SplitBoundaryPixels off) give a staircase energy, off the exact one; the
+  // adaptive flooding changes nothing in the result; fewer L-BFGS corrections change the path.
+  auto image = MakeImage(64, 64);
+  const auto run = [&image](bool split, bool adaptive, int corrections)
+  {
+    vtkNew<vtkCVTImageFilter> filter;
+    filter->SetInputData(image);
+    filter->SetNumberOfSites(30);
+    filter->SetMaximumNumberOfIterations(15);
+    filter->SetTolerance(0.0);
+    filter->SetSplitBoundaryPixels(split);
+    filter->SetAdaptiveJumpFlooding(adaptive);
+    filter->SetNumberOfCorrections(corrections);
+    filter->ComputeExactEnergyOn();
+    filter->Update();
+    vtkFieldData* fields = filter->GetSitesOutput()->GetFieldData();
+    return std::make_pair(fields->GetArray("Energy")->GetTuple1(0),
+      std::abs(fields->GetArray("EnergyRelativeDifference")->GetTuple1(0)));
+  };
+  const auto exact = run(true, true, 7);
+  const auto whole = run(false, true, 7);
+  const auto full = run(true, false, 7);
+  const auto short_memory = run(true, true, 1);
+  EXPECT_LT(exact.second, 1e-4);
+  EXPECT_GT(whole.second, 10.0 * exact.second);
+  EXPECT_NEAR(full.first, exact.first, 1e-6 * exact.first);
+  EXPECT_NE(short_memory.first, exact.first);
+}
+
 TEST(ImageFilter, GradientToleranceStops)
 {
   vtkNew<vtkCVTImageFilter> filter;

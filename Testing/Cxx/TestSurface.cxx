@@ -53,6 +53,17 @@ cvt::GeometryImage ToGeometryImage(vtkImageData* image)
   return gi;
 }
 
+class ErrorCatcher : public vtkCommand
+{
+public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Message += static_cast<const char*>(data);
+  }
+  std::string Message;
+};
+
 struct MeshCheck
 {
   long long Vertices = 0, Edges = 0, Faces = 0;
@@ -255,6 +266,24 @@ TEST(SurfaceFilter, TorusWith600SitesAndItsRemesh)
     cvt->GetLabelsOutput()->GetPointData()->GetArray("SiteId")->GetNumberOfTuples(), 256 * 128);
 }
 
+TEST(SurfaceFilter, WarnsWhenTheGeometryImageIsTooCoarse)
+{
+  vtkNew<vtkCVTGeometryImageSource> source;
+  source->SetResolution(32, 16); // 512 pixels for 200 sites
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(source->GetOutputPort());
+  cvt->SetNumberOfSites(200);
+  cvt->SetMaximumNumberOfIterations(2);
+  vtkNew<ErrorCatcher> warnings;
+  cvt->AddObserver(vtkCommand::WarningEvent, warnings);
+  cvt->Update();
+  EXPECT_NE(warnings->Message.find("coarse"), std::string::npos) << warnings->Message;
+  EXPECT_EQ(cvt->GetSitesOutput()->GetNumberOfPoints(), 200); // a warning, not an error
+  vtkFieldData* fields = cvt->GetSitesOutput()->GetFieldData();
+  EXPECT_GT(fields->GetArray("MaximumAreaWeight")->GetTuple1(0),
+    fields->GetArray("MinimumAreaWeight")->GetTuple1(0));
+}
+
 TEST(SurfaceFilter, AbortStopsTheIterations)
 {
   vtkNew<vtkCVTGeometryImageSource> source;
@@ -300,17 +329,6 @@ TEST(SurfaceFilter, SphereRemeshIsClosedWithEulerCharacteristicTwo)
 
 namespace
 {
-class ErrorCatcher : public vtkCommand
-{
-public:
-  static ErrorCatcher* New() { return new ErrorCatcher; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    this->Message += static_cast<const char*>(data);
-  }
-  std::string Message;
-};
-
 std::string FailWith(vtkImageData* image, int sites = 10)
 {
   vtkNew<vtkCVTSurfaceFilter> cvt;
