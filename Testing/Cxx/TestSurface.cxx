@@ -284,6 +284,50 @@ TEST(SurfaceFilter, WarnsWhenTheGeometryImageIsTooCoarse)
     fields->GetArray("MinimumAreaWeight")->GetTuple1(0));
 }
 
+TEST(SurfaceFilter, SeedToleranceAndCorrectionsTakeEffect)
+{
+  vtkNew<vtkCVTGeometryImageSource> source;
+  source->SetResolution(128, 64);
+  const auto run = [&source](int seed, double tolerance, double gradientTolerance, int corrections)
+  {
+    auto cvt = vtkSmartPointer<vtkCVTSurfaceFilter>::New();
+    cvt->SetInputConnection(source->GetOutputPort());
+    cvt->SetNumberOfSites(80);
+    cvt->SetRandomSeed(seed);
+    cvt->SetMaximumNumberOfIterations(200);
+    cvt->SetTolerance(tolerance);
+    cvt->SetGradientTolerance(gradientTolerance);
+    cvt->SetNumberOfCorrections(corrections);
+    cvt->Update();
+    return cvt;
+  };
+  const auto reason = [](vtkCVTSurfaceFilter* cvt)
+  {
+    return cvt->GetSitesOutput()
+      ->GetFieldData()
+      ->GetAbstractArray("StopReason")
+      ->GetVariantValue(0)
+      .ToString();
+  };
+  auto a = run(3, 1e-3, 0.0, 7), b = run(3, 1e-3, 0.0, 7), c = run(4, 1e-3, 0.0, 7);
+  double pa[3], pb[3], pc[3];
+  a->GetSitesOutput()->GetPoint(0, pa);
+  b->GetSitesOutput()->GetPoint(0, pb);
+  c->GetSitesOutput()->GetPoint(0, pc);
+  EXPECT_EQ(pa[0], pb[0]); // the same seed gives the same sites
+  EXPECT_NE(pa[0], pc[0]);
+  EXPECT_LT(a->GetHistoryOutput()->GetNumberOfRows(), 200);
+  EXPECT_EQ(reason(a), "relative energy decrease below tolerance") << reason(a);
+  auto g = run(3, 0.0, 0.3, 7);
+  EXPECT_EQ(reason(g), "gradient tolerance reached") << reason(g);
+  // One correction takes another path than seven once the memory fills.
+  auto seven = run(3, 0.0, 0.02, 7), one = run(3, 0.0, 0.02, 1);
+  vtkTable* h7 = seven->GetHistoryOutput();
+  vtkTable* h1 = one->GetHistoryOutput();
+  ASSERT_GT(std::min(h7->GetNumberOfRows(), h1->GetNumberOfRows()), 5);
+  EXPECT_NE(h7->GetValueByName(5, "energy").ToDouble(), h1->GetValueByName(5, "energy").ToDouble());
+}
+
 TEST(SurfaceFilter, AbortStopsTheIterations)
 {
   vtkNew<vtkCVTGeometryImageSource> source;
