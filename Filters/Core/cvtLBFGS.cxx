@@ -139,12 +139,7 @@ bool RunLBFGS(Engine& engine, const Grid& grid, const std::vector<double>& sites
 {
   result = OptimizerResult();
   Objective objective(engine, grid, options, progress, result);
-  LBFGSpp::LBFGSBParam<double> parameters;
-  parameters.m = std::max(1, options.NumberOfCorrections);
-  parameters.epsilon = 0.0; // the objective applies every stop condition itself
-  parameters.epsilon_rel = 0.0;
-  parameters.max_iterations = 0;
-  parameters.max_linesearch = 20;
+  const LBFGSpp::LBFGSBParam<double> parameters = SolverParameters(options);
   LBFGSpp::LBFGSBSolver<double, ReportingLineSearch> solver(parameters);
   Vector x = objective.ToSolver(sites);
   // Bounds: the domain grown by 1% on every side. With bounds exactly at the domain's edge,
@@ -173,7 +168,7 @@ bool RunLBFGS(Engine& engine, const Grid& grid, const std::vector<double>& sites
   {
     // The line search found no point of sufficient decrease: energy and gradient are as
     // accurate as float sums allow, so this is where the method ends.
-    result.StopReason = std::string("no sufficient decrease possible (") + failure.what() + ")";
+    result.StopReason = NoSufficientDecrease(failure);
   }
   if (result.Sites.empty())
   {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <string>
 
 namespace cvt
@@ -53,6 +54,25 @@ inline void RecordAndCheck(const OptimizerOptions& options, const ProgressCallba
   {
     throw StopOptimizer{ "relative energy decrease below tolerance", false };
   }
+}
+
+/// The solver's parameters: M corrections; no stop test of its own (RecordAndCheck applies
+/// them all); at most 20 line-search steps.
+inline LBFGSpp::LBFGSBParam<double> SolverParameters(const OptimizerOptions& options)
+{
+  LBFGSpp::LBFGSBParam<double> parameters;
+  parameters.m = std::max(1, options.NumberOfCorrections);
+  parameters.epsilon = 0.0;
+  parameters.epsilon_rel = 0.0;
+  parameters.max_iterations = 0;
+  parameters.max_linesearch = 20;
+  return parameters;
+}
+
+/// The stop reason when the solver gives up: no step of sufficient decrease was found.
+inline std::string NoSufficientDecrease(const std::exception& failure)
+{
+  return std::string("no sufficient decrease possible (") + failure.what() + ")";
 }
 
 /// LBFGS++'s More-Thuente line search, reporting every accepted iterate to the objective.

@@ -48,11 +48,10 @@ public:
   {
   }
 
-  /// Label and integrate for these sites; keeps the labels and the best state.
+  /// Label and integrate for these sites; keeps the best state.
   double Evaluate(const std::vector<double>& sites, const std::vector<long long>& pixels)
   {
-    if (!this->Engine.SetSites(sites, pixels) || !this->Engine.ComputeCellSums(this->Sums) ||
-      !this->Engine.GetLabels(this->Labels))
+    if (!this->Engine.SetSites(sites, pixels) || !this->Engine.ComputeCellSums(this->Sums))
     {
       throw StopOptimizer{ this->Engine.GetLastError(), true };
     }
@@ -66,7 +65,6 @@ public:
       this->Result.Sites = sites;
       this->Result.Pixels = pixels;
       this->Result.Sums = this->Sums;
-      this->Result.Labels = this->Labels;
     }
     return energy;
   }
@@ -83,7 +81,8 @@ public:
     RecordAndCheck(this->Options, this->Progress, this->Result, entry);
   }
 
-  /// Ends a run: the stop reason, and the engine relabelled for the best sites.
+  /// Ends a run: the engine relabelled for the best sites, and their labels read back (once,
+  /// here, rather than after every evaluation).
   bool Finish(const StopOptimizer* stop, std::string& error)
   {
     if (stop && stop->EngineFailed)
@@ -106,6 +105,11 @@ public:
         return false;
       }
     }
+    if (!this->Engine.GetLabels(this->Result.Labels))
+    {
+      error = this->Engine.GetLastError();
+      return false;
+    }
     return true;
   }
 
@@ -116,7 +120,6 @@ public:
   SurfaceResult& Result;
   Clock::time_point Start;
   CellSums Sums;
-  std::vector<int> Labels;
   std::vector<double> Sites;
   std::vector<long long> Pixels;
   double BestEnergy = std::numeric_limits<double>::infinity();
@@ -241,11 +244,7 @@ bool RunSurfaceLBFGS(SurfaceEngine& engine, const GeometryImage& image,
     // The first evaluation labels the initial sites, which later projections need.
     run.Record(0, run.Evaluate(sites, pixels));
     ProjectedObjective objective(run, scale);
-    LBFGSpp::LBFGSBParam<double> parameters;
-    parameters.m = std::max(1, options.NumberOfCorrections);
-    parameters.epsilon = 0.0;
-    parameters.epsilon_rel = 0.0;
-    parameters.max_iterations = 0;
+    const LBFGSpp::LBFGSBParam<double> parameters = SolverParameters(options);
     LBFGSpp::LBFGSBSolver<double, ReportingLineSearch> solver(parameters);
     Vector x(sites.size());
     for (size_t k = 0; k < sites.size(); ++k)
@@ -265,7 +264,7 @@ bool RunSurfaceLBFGS(SurfaceEngine& engine, const GeometryImage& image,
   }
   catch (const std::exception& failure)
   {
-    result.StopReason = std::string("no sufficient decrease possible (") + failure.what() + ")";
+    result.StopReason = NoSufficientDecrease(failure);
   }
   return run.Finish(nullptr, error);
 }
