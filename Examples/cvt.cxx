@@ -5,8 +5,11 @@
 #include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTImageFilter.h"
 #include "vtkCVTMeshGeometryImage.h"
+#include "vtkCVTRemeshFilter.h"
 #include "vtkCVTSceneRenderer.h"
 #include "vtkCVTSurfaceFilter.h"
+#include "vtkLogger.h"
+#include "vtkOutputWindow.h"
 
 #include "vtkAbstractPolyDataReader.h"
 #include "vtkCleanPolyData.h"
@@ -38,6 +41,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -69,9 +73,14 @@ Input:
 Surface (cvt surface):
   --torus R r             a torus of ring radius R and tube radius r (default 1 0.4)
   --gi-resolution W H     geometry image size (default 1024 512)
-  --input MESH            a triangle mesh (.vtp .vtk .stl .ply .obj): a disk (parameterised
-                          onto the square, mean-value coordinates) or a closed genus-0 mesh
-                          star-shaped about its centroid (cut open at a meridian and poles)
+  --input MESH            a surface mesh (.vtp .vtk .stl .ply .obj): any orientable manifold
+                          (genus, boundaries, several parts); cleaned (merged points,
+                          triangulated, degenerate triangles dropped, oriented) and remeshed
+  --array NAME            with --input: a point array used as density (denser where larger)
+  --engine auto|cpu|opengl
+                          with --input: cpu (and auto) computes exact restricted Voronoi cells
+                          on the mesh, multi-threaded; opengl parameterises a disk or a
+                          star-shaped closed mesh as one geometry image (default auto)
 Sites:
   --sites N               number of sites (default 1000)
   --initial-sites FILE    CSV of initial sites, one "x,y" per line (overrides --sites)
@@ -105,6 +114,7 @@ struct Options
   double Torus[2] = { 1.0, 0.4 };
   int GIResolution[2] = { 1024, 512 };
   bool HaveTorus = false, HaveImageOption = false;
+  std::string Engine = "auto";
   long long Seed = 1;
   double Tolerance = 1e-6;
 };
@@ -174,10 +184,9 @@ Options ParseArguments(int argc, char* argv[])
     else if (a == "--input")
       options.Input = value();
     else if (a == "--array")
-    {
       options.Array = value();
-      options.HaveImageOption = true;
-    }
+    else if (a == "--engine")
+      options.Engine = value();
     else if (a == "--invert")
     {
       options.Invert = true;
@@ -265,9 +274,21 @@ Options ParseArguments(int argc, char* argv[])
   }
   if (options.Command == "surface" && options.HaveImageOption)
   {
-    Fail("--array, --invert, --domain, --resolution and --initial-sites are options of "
+    Fail("--invert, --domain, --resolution and --initial-sites are options of "
          "'cvt image', not of 'cvt surface'",
       2);
+  }
+  if (options.Engine != "auto" && options.Engine != "cpu" && options.Engine != "opengl")
+  {
+    Fail("--engine must be auto, cpu or opengl, got '" + options.Engine + "'", 2);
+  }
+  if (options.Command == "image" && options.Engine == "cpu")
+  {
+    Fail("--engine cpu is for 'cvt surface --input MESH'; 'cvt image' runs on OpenGL", 2);
+  }
+  if (options.Command == "surface" && !options.Array.empty() && options.Input.empty())
+  {
+    Fail("--array with 'cvt surface' names a point array of the --input mesh", 2);
   }
   if (options.Command == "image" && options.HaveTorus)
   {
@@ -487,9 +508,27 @@ class ErrorObserver : public vtkCommand
 {
 public:
   static ErrorObserver* New() { return new ErrorObserver; }
-  void Execute(vtkObject*, unsigned long, void* data) override
+  void Execute(vtkObject*, unsigned long event, void* data) override
   {
-    this->Message = static_cast<const char*>(data);
+    // VTK's text is "ERROR: In FILE, line N\nvtkClass (0x...): message"; keep the message.
+    std::string text = static_cast<const char*>(data);
+    const size_t line = text.find('\n');
+    const size_t header = text.find("): ", line == std::string::npos ? 0 : line);
+    if ((text.rfind("ERROR: In ", 0) == 0 || text.rfind("Warning: In ", 0) == 0) &&
+      header != std::string::npos)
+    {
+      text = text.substr(header + 3);
+    }
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    if (event == vtkCommand::WarningEvent)
+    {
+      std::cerr << "cvt: warning: " << text << "\n";
+      return;
+    }
+    this->Message = text;
   }
   std::string Message;
 };
@@ -499,6 +538,7 @@ void Run(vtkAlgorithm* filter, vtkPolyData* (*sites)(vtkAlgorithm*))
 {
   vtkNew<ErrorObserver> errors;
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
+  filter->AddObserver(vtkCommand::WarningEvent, errors);
   filter->Update();
   if (!errors->Message.empty() || sites(filter)->GetNumberOfPoints() == 0)
   {
@@ -649,6 +689,47 @@ int RunImage(const Options& options)
   return 0;
 }
 
+/// A reader for the --input mesh, by extension.
+vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options)
+{
+  struct stat info;
+  if (stat(options.Input.c_str(), &info) != 0)
+  {
+    Fail("cannot read --input '" + options.Input + "': no such file");
+  }
+  const std::string ext = Extension(options.Input);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == "vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else if (ext == "vtk")
+  {
+    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else if (ext == "stl" || ext == "ply" || ext == "obj")
+  {
+    vtkSmartPointer<vtkAbstractPolyDataReader> r;
+    if (ext == "stl")
+      r = vtkSmartPointer<vtkSTLReader>::New();
+    else if (ext == "ply")
+      r = vtkSmartPointer<vtkPLYReader>::New();
+    else
+      r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else
+  {
+    Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj");
+  }
+  return reader;
+}
+
 /// The surface's geometry image: a torus, or a mesh read from --input and parameterised.
 vtkSmartPointer<vtkAlgorithm> SurfaceGeometryImage(const Options& options)
 {
@@ -662,51 +743,98 @@ vtkSmartPointer<vtkAlgorithm> SurfaceGeometryImage(const Options& options)
     source->SetResolution(options.GIResolution[0], options.GIResolution[1]);
     return source;
   }
-  struct stat info;
-  if (stat(options.Input.c_str(), &info) != 0)
-  {
-    Fail("cannot read --input '" + options.Input + "': no such file");
-  }
-  const std::string ext = Extension(options.Input);
-  vtkSmartPointer<vtkAbstractPolyDataReader> reader;
-  vtkSmartPointer<vtkAlgorithm> xmlOrLegacy;
-  if (ext == "vtp")
-  {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(options.Input.c_str());
-    xmlOrLegacy = r;
-  }
-  else if (ext == "vtk")
-  {
-    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
-    r->SetFileName(options.Input.c_str());
-    xmlOrLegacy = r;
-  }
-  else if (ext == "stl")
-    reader = vtkSmartPointer<vtkSTLReader>::New();
-  else if (ext == "ply")
-    reader = vtkSmartPointer<vtkPLYReader>::New();
-  else if (ext == "obj")
-    reader = vtkSmartPointer<vtkOBJReader>::New();
-  else
-  {
-    Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj");
-  }
-  if (reader)
-  {
-    reader->SetFileName(options.Input.c_str());
-  }
-  // Formats such as STL repeat shared points: merge them so that triangles share edges.
   vtkNew<vtkCleanPolyData> merge;
-  merge->SetInputConnection(reader ? reader->GetOutputPort() : xmlOrLegacy->GetOutputPort());
+  merge->SetInputConnection(MeshReader(options)->GetOutputPort());
   auto parameterise = vtkSmartPointer<vtkCVTMeshGeometryImage>::New();
   parameterise->SetInputConnection(merge->GetOutputPort());
   parameterise->SetResolution(options.GIResolution[0], options.GIResolution[1]);
   return parameterise;
 }
 
+/// cvt surface --input MESH on the CPU engine: restricted Voronoi cells on the mesh itself.
+int RunRemesh(const Options& options)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point from)
+  { return std::chrono::duration<double>(Clock::now() - from).count(); };
+  const Clock::time_point start = Clock::now();
+  vtkSmartPointer<vtkAlgorithm> reader = MeshReader(options);
+  vtkNew<ErrorObserver> readErrors;
+  reader->AddObserver(vtkCommand::ErrorEvent, readErrors);
+  reader->Update();
+  if (!readErrors->Message.empty())
+  {
+    Fail("cannot read --input '" + options.Input + "': " + readErrors->Message);
+  }
+  const double readSeconds = seconds(start);
+  vtkNew<vtkCVTRemeshFilter> cvt;
+  cvt->SetInputConnection(reader->GetOutputPort());
+  cvt->SetDensityArray(options.Array.c_str());
+  SetOptimizer(options, cvt.Get());
+  const Clock::time_point optimise = Clock::now();
+  Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetSitesOutput(); });
+  const double cvtSeconds = seconds(optimise);
+
+  const Clock::time_point write = Clock::now();
+  const std::string dir = OutputFolder(options);
+  vtkPolyData* sites = cvt->GetSitesOutput();
+  vtkPolyData* remesh = cvt->GetRemeshOutput();
+  Write<vtkXMLPolyDataWriter>(sites, dir + "sites.vtp");
+  Write<vtkXMLPolyDataWriter>(cvt->GetLabelsOutput(), dir + "labels.vtp");
+  Write<vtkXMLPolyDataWriter>(remesh, dir + "remesh.vtp");
+  WriteCsv(sites, cvt->GetHistoryOutput(), 3, dir);
+  const double writeSeconds = seconds(write);
+  vtkNew<vtkCVTSceneRenderer> scene;
+  WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), dir + "cvt.png");
+  if (options.Report)
+  {
+    vtkFieldData* in = sites->GetFieldData();
+    vtkFieldData* out = remesh->GetFieldData();
+    const auto topology = [](vtkDataObject* data, const std::string& prefix)
+    {
+      std::ostringstream text;
+      text << Field(data, (prefix + "Components").c_str()) << " parts, genus "
+           << Field(data, (prefix + "Genus").c_str()) << ", "
+           << Field(data, (prefix + "BoundaryLoops").c_str()) << " boundary loops";
+      return text.str();
+    };
+    std::cout << std::setprecision(6) << "report:\n"
+              << "  engine                      CPU: "
+              << in->GetAbstractArray("EngineReason")->GetVariantValue(0).ToString() << "\n"
+              << "  method                      " << options.Method << "\n"
+              << "  iterations / evaluations    " << Field(sites, "Iterations") << " / "
+              << Field(sites, "Evaluations") << "\n"
+              << "  energy F                    " << Field(sites, "Energy") << "\n"
+              << "  normalised F n / A^2        "
+              << Field(sites, "Energy") * sites->GetNumberOfPoints() /
+        (Field(sites, "SurfaceArea") * Field(sites, "SurfaceArea"))
+              << "\n"
+              << "  |grad F|                    " << Field(sites, "GradientNorm") << "\n"
+              << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
+              << "  input topology              " << topology(sites, "Input") << "\n"
+              << "  remesh topology             " << topology(remesh, "") << "\n"
+              << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
+              << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
+              << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed)\n"
+              << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
+              << " %\n"
+              << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
+              << Field(remesh, "MaximumAngle") << " degrees\n"
+              << "  seconds: read " << readSeconds << ", CVT and remesh " << cvtSeconds
+              << ", write " << writeSeconds << "\n";
+    (void)out;
+  }
+  PrintSummary(options, sites, "not used (CPU engine)",
+    "sites.vtp sites.csv labels.vtp remesh.vtp history.csv cvt.png");
+  return 0;
+}
+
 int RunSurface(const Options& options)
 {
+  if (!options.Input.empty() && options.Engine != "opengl")
+  {
+    return RunRemesh(options);
+  }
   vtkSmartPointer<vtkAlgorithm> geometryImage = SurfaceGeometryImage(options);
   vtkNew<ErrorObserver> meshErrors;
   geometryImage->AddObserver(vtkCommand::ErrorEvent, meshErrors);
@@ -777,5 +905,9 @@ int RunSurface(const Options& options)
 int main(int argc, char* argv[])
 {
   const Options options = ParseArguments(argc, argv);
+  // Errors and warnings reach the user once, through the filters' observers ("cvt: ..."),
+  // without VTK's pipeline dumps.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   return options.Command == "surface" ? RunSurface(options) : RunImage(options);
 }

@@ -38,10 +38,33 @@ expect_error "unknown type" surface --input "$T/mesh.xyz"
 expect_error "option of 'cvt surface'" image --torus 1 0.4
 expect_error "mask leaves" surface --gi-resolution 4 4 --sites 100
 expect_error "between 0 and 1" image --gradient-tolerance 2
-# A closed mesh (a torus remesh) is not a disk; points alone are not triangles.
+# A closed mesh (a torus remesh) is not a disk for the one-chart OpenGL path; points alone are
+# not a surface for either engine.
 env -u DISPLAY "$CVT" surface --gi-resolution 64 32 --sites 40 --iterations 2 --output "$T/torus" --quiet
-expect_error "closed" surface --input "$T/torus/remesh.vtp" --gi-resolution 32 32
-expect_error "no triangles" surface --input "$T/torus/sites.vtp" --gi-resolution 32 32
+expect_error "closed" surface --engine opengl --input "$T/torus/remesh.vtp" --gi-resolution 32 32
+expect_error "no triangles" surface --engine opengl --input "$T/torus/sites.vtp" --gi-resolution 32 32
+expect_error "no polygons (only points or lines)" surface --input "$T/torus/sites.vtp"
+expect_error "auto, cpu or opengl" surface --engine cuda
+expect_error "names a point array of the --input mesh" surface --array Density
+expect_error "no one-component point array 'Density'" surface --input "$T/torus/remesh.vtp" --array Density
+expect_error "at least 3" surface --input "$T/torus/remesh.vtp" --sites 2
+# Three triangles on one edge: refused in one line saying where, without VTK's pipeline dump.
+cat > "$T/fin.vtk" <<'MESH'
+# vtk DataFile Version 3.0
+fin
+ASCII
+DATASET POLYDATA
+POINTS 5 float
+0 0 0 1 0 0 0 1 0 0 -1 0 0 0 1
+POLYGONS 3 12
+3 0 1 2
+3 1 0 3
+3 0 1 4
+MESH
+expect_error "cvt: Cannot remesh this input: 1 non-manifold edges" surface --input "$T/fin.vtk"
+if [ "$(wc -l < "$T/log")" -ne 1 ] || grep -q "ERROR: In\|vtkExecutive" "$T/log"; then
+  echo "the non-manifold error was not one clean line:"; cat "$T/log"; bad=1
+fi
 # No OpenGL context at all.
 if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
   echo "ran without an OpenGL context"; bad=1

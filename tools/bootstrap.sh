@@ -20,7 +20,7 @@ packages=(
   libxml2-dev libexpat1-dev libjsoncpp-dev libpugixml-dev libcgns-dev libproj-dev libfmt-dev
   libprotobuf-dev protobuf-compiler
   libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
-  libeigen3-dev liblbfgspp-dev
+  libeigen3-dev liblbfgspp-dev libnanoflann-dev
   libgtest-dev googletest python3-matplotlib xvfb xauth
 )
 missing=()

@@ -32,6 +32,10 @@ struct OptimizerOptions
   double GradientTolerance = 0.0;
   /// L-BFGS: number of corrections kept for the inverse Hessian (Liu et al. use 7).
   int NumberOfCorrections = 7;
+  /// Restricted CVT on meshes (RunMeshLBFGS): Lloyd iterations before L-BFGS. They bring the
+  /// random sites close to their cells' centroids, so no first quasi-Newton step can throw a
+  /// site off the surface where its cell would be empty and stay so.
+  int LloydWarmUpIterations = 0;
 };
 
 struct OptimizerResult

@@ -10,16 +10,6 @@
 namespace cvt
 {
 
-namespace
-{
-// std::uniform_real_distribution is implementation-defined; this is not, so a seed gives the
-// same sites with every standard library.
-double Uniform01(std::mt19937_64& rng)
-{
-  return static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);
-}
-}
-
 std::vector<double> SampleSites(
   const Grid& grid, const std::vector<float>& density, int count, std::uint64_t seed)
 {

@@ -6,11 +6,19 @@
 #include "cvtEngine.h"
 
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
 namespace cvt
 {
+
+/// A uniform draw in [0, 1) from the top 53 bits: std::uniform_real_distribution is
+/// implementation-defined, this is not, so a seed gives the same sites with every library.
+inline double Uniform01(std::mt19937_64& rng)
+{
+  return static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);
+}
 
 /// Draws `count` sites with probability proportional to the pixelwise density (uniform inside
 /// the chosen pixel). Deterministic for a given seed. An empty density means uniform.

@@ -1,5 +1,7 @@
 #include "cvtSurface.h"
 
+#include "cvtSampling.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -199,8 +201,7 @@ std::vector<double> SampleSurfaceSites(
   const GeometryImage& image, int count, std::uint64_t seed, std::vector<long long>& pixels)
 {
   std::mt19937_64 rng(seed);
-  const auto uniform = [&rng]()
-  { return static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0); };
+  const auto uniform = [&rng]() { return Uniform01(rng); };
   const long long n = image.NumberOfPixels();
   std::vector<double> cumulative(static_cast<size_t>(n));
   double total = 0.0;

@@ -1,0 +1,35 @@
+// The remesh of a restricted CVT: its restricted Delaunay triangles, with vertices on the
+// input surface (boundary sites pinned to the input's border), checked and repaired into a
+// manifold mesh.
+#ifndef cvtRemesh_h
+#define cvtRemesh_h
+
+#include "cvtCoreModule.h" // for export macro
+#include "cvtRestrictedVoronoi.h"
+
+#include <array>
+#include <vector>
+
+namespace cvt
+{
+
+struct Remesh
+{
+  std::vector<double> Points; // x, y, z per vertex
+  std::vector<std::array<int, 3>> Triangles;
+  std::vector<int> SiteIds;              // the site of each vertex
+  std::vector<int> SourceTriangles;      // the input triangle holding each vertex
+  std::vector<double> SourceBarycentric; // 3 per vertex, in that triangle
+  int RemovedTriangles = 0;              // dropped to keep edges manifold
+  int FilledHoles = 0;                   // small holes closed (cells meeting in a degenerate point)
+};
+
+/// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
+/// points (boundary points for cells on the border), triangles the restricted Delaunay ones;
+/// triangles that would make an edge non-manifold are dropped, and holes whose vertices are not
+/// all on the input's border (at most `maximumHole` edges) are closed.
+CVTCORE_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, int maximumHole = 8);
+
+} // namespace cvt
+
+#endif

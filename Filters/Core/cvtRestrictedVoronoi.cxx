@@ -1,0 +1,834 @@
+#include "cvtRestrictedVoronoi.h"
+
+#include "vtkSMPTools.h"
+
+#include <nanoflann.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <unordered_set>
+
+namespace cvt
+{
+
+namespace
+{
+// ---- Small 3D vector helpers (the clipping works in double precision throughout).
+inline double Dot(const double* a, const double* b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline double Distance2(const double* a, const double* b)
+{
+  const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  return Dot(d, d);
+}
+inline void Cross(const double* a, const double* b, double* out)
+{
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/// nanoflann's view of the flat site array.
+struct SiteCloud
+{
+  const std::vector<double>* Sites = nullptr;
+  size_t kdtree_get_point_count() const { return this->Sites->size() / 3; }
+  double kdtree_get_pt(size_t i, size_t d) const { return (*this->Sites)[3 * i + d]; }
+  template<class Box>
+  bool kdtree_get_bbox(Box&) const
+  {
+    return false;
+  }
+};
+using SiteTree =
+  nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SiteCloud>, SiteCloud, 3,
+    std::uint32_t>;
+
+/// A vertex of a clipped triangle. Label names the edge to the next vertex: -1 - e for edge e
+/// of the mesh triangle (from local vertex e to e + 1), j >= 0 for the bisector with site j.
+/// Origin is the local mesh vertex it is (0..2), or -1 for a computed point.
+struct PolygonVertex
+{
+  double P[3];
+  int Label;
+  int Origin;
+};
+
+constexpr int MaximumPolygonSize = 64;
+struct Polygon
+{
+  PolygonVertex V[MaximumPolygonSize];
+  int Size = 0;
+};
+
+/// One restricted cell's part in one triangle, integrated.
+struct Piece
+{
+  int Site;
+  double Mass, Moment[3], Energy;
+};
+
+/// What the dual pass learns about a site from one triangle.
+struct SiteContact
+{
+  int Site;
+  int Triangle;
+  double Distance2; // from the site to the nearest point of its part of the triangle
+  double Point[3];
+  int BoundaryRank;         // 0: none, 1: boundary edge point, 2: boundary corner
+  double BoundaryDistance2; // from the site to BoundaryPoint
+  double BoundaryPoint[3];
+};
+
+constexpr int NeighborCount = 20;
+constexpr double CornerAngleDegrees = 60.0;
+}
+
+struct RestrictedVoronoi::Internals
+{
+  SurfaceMesh Mesh;
+  std::vector<double> Normals;                     // unit normal per triangle
+  std::vector<std::array<char, 3>> OnMeshBoundary; // per triangle edge
+  std::vector<char> Corner; // per point: a boundary point where the border turns
+
+  std::vector<double> Sites;
+  SiteCloud Cloud;
+  std::unique_ptr<SiteTree> Tree;
+  int K = 0;                            // neighbours stored per site
+  std::vector<std::uint32_t> Neighbors; // K per site, nearest first
+  std::vector<double> NeighborDistance2;
+
+  std::vector<int> PointLabels;
+  int BlockCount = 1;
+  std::vector<std::vector<Piece>> BlockPieces;
+  std::vector<std::vector<std::array<int, 3>>> BlockTriples;
+  std::vector<std::vector<SiteContact>> BlockContacts;
+
+  void LabelPoints();
+  void Sweep(bool dual);
+  void ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
+    std::vector<std::array<int, 3>>& triples, std::vector<SiteContact>& contacts,
+    std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const;
+  bool ClipToCell(int t, int site, Polygon& polygon, std::vector<std::uint32_t>& scratchIds,
+    std::vector<double>& scratchD2) const;
+  void Integrate(int t, int site, const Polygon& polygon, Piece& piece) const;
+  void Barycentric(int t, const double* p, double* lambda) const;
+  void Contact(int t, int site, const Polygon& polygon, SiteContact& contact) const;
+};
+
+//------------------------------------------------------------------------------
+void RestrictedVoronoi::Internals::Barycentric(int t, const double* p, double* lambda) const
+{
+  const auto& tri = this->Mesh.Triangles[t];
+  const double* a = this->Mesh.Point(tri[0]);
+  const double* b = this->Mesh.Point(tri[1]);
+  const double* c = this->Mesh.Point(tri[2]);
+  const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double w[3] = { p[0] - a[0], p[1] - a[1], p[2] - a[2] };
+  const double g11 = Dot(e1, e1), g12 = Dot(e1, e2), g22 = Dot(e2, e2);
+  const double r1 = Dot(w, e1), r2 = Dot(w, e2);
+  const double det = g11 * g22 - g12 * g12;
+  const double u = det > 0.0 ? (g22 * r1 - g12 * r2) / det : 0.0;
+  const double v = det > 0.0 ? (g11 * r2 - g12 * r1) / det : 0.0;
+  lambda[0] = 1.0 - u - v;
+  lambda[1] = u;
+  lambda[2] = v;
+}
+
+//------------------------------------------------------------------------------
+// Clips triangle t to the Voronoi cell of `site`: by the bisectors of its neighbours, nearest
+// first, until no further neighbour can reach the polygon (security radius). Mesh-edge points
+// are computed from the edge's end points in a fixed order, so the two triangles of an edge
+// agree on them exactly. Returns false when the polygon is empty.
+bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
+  std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const
+{
+  const auto& tri = this->Mesh.Triangles[t];
+  polygon.Size = 3;
+  for (int k = 0; k < 3; ++k)
+  {
+    std::copy(this->Mesh.Point(tri[k]), this->Mesh.Point(tri[k]) + 3, polygon.V[k].P);
+    polygon.V[k].Label = -1 - k;
+    polygon.V[k].Origin = k;
+  }
+  const double* s = &this->Sites[3 * static_cast<size_t>(site)];
+  const size_t siteCount = this->Sites.size() / 3;
+  const std::uint32_t* ids = &this->Neighbors[static_cast<size_t>(site) * this->K];
+  const double* d2 = &this->NeighborDistance2[static_cast<size_t>(site) * this->K];
+  size_t available = static_cast<size_t>(this->K);
+  Polygon clipped;
+  double dist[MaximumPolygonSize];
+  for (size_t n = 0;; ++n)
+  {
+    if (n == available)
+    {
+      if (available >= siteCount - 1)
+      {
+        break; // every other site has clipped
+      }
+      // Rare: more neighbours are needed than are stored; ask the tree for twice as many.
+      const size_t want = std::min(siteCount, 2 * (available + 1));
+      scratchIds.resize(want);
+      scratchD2.resize(want);
+      const size_t found = this->Tree->knnSearch(s, want, scratchIds.data(), scratchD2.data());
+      // The first result is the site itself (or a site at the same place).
+      size_t keep = 0;
+      for (size_t f = 0; f < found; ++f)
+      {
+        if (scratchIds[f] != static_cast<std::uint32_t>(site))
+        {
+          scratchIds[keep] = scratchIds[f];
+          scratchD2[keep] = scratchD2[f];
+          ++keep;
+        }
+      }
+      ids = scratchIds.data();
+      d2 = scratchD2.data();
+      if (keep <= available)
+      {
+        break;
+      }
+      available = keep;
+    }
+    double radius2 = 0.0;
+    for (int v = 0; v < polygon.Size; ++v)
+    {
+      radius2 = std::max(radius2, Distance2(polygon.V[v].P, s));
+    }
+    if (4.0 * radius2 < d2[n])
+    {
+      break; // this neighbour and all further ones are beyond the polygon
+    }
+    const int j = static_cast<int>(ids[n]);
+    const double* q = &this->Sites[3 * static_cast<size_t>(j)];
+    const double normal[3] = { q[0] - s[0], q[1] - s[1], q[2] - s[2] };
+    const double offset = 0.5 * Dot(normal, normal);
+    const auto side = [&](const double* p)
+    {
+      const double w[3] = { p[0] - s[0], p[1] - s[1], p[2] - s[2] };
+      return Dot(w, normal) - offset;
+    };
+    bool anyOut = false, anyIn = false;
+    for (int v = 0; v < polygon.Size; ++v)
+    {
+      dist[v] = side(polygon.V[v].P);
+      (dist[v] > 0.0 ? anyOut : anyIn) = true;
+    }
+    if (!anyOut)
+    {
+      continue;
+    }
+    if (!anyIn)
+    {
+      polygon.Size = 0;
+      return false;
+    }
+    clipped.Size = 0;
+    for (int v = 0; v < polygon.Size && clipped.Size < MaximumPolygonSize - 1; ++v)
+    {
+      const PolygonVertex& a = polygon.V[v];
+      const PolygonVertex& b = polygon.V[(v + 1) % polygon.Size];
+      const double da = dist[v], db = dist[(v + 1) % polygon.Size];
+      if (da <= 0.0)
+      {
+        clipped.V[clipped.Size++] = a;
+      }
+      if ((da <= 0.0) == (db <= 0.0))
+      {
+        continue;
+      }
+      PolygonVertex& p = clipped.V[clipped.Size++];
+      p.Origin = -1;
+      p.Label = da <= 0.0 ? j : a.Label;
+      if (a.Label < 0)
+      {
+        const int e = -1 - a.Label;
+        int from = tri[e], to = tri[(e + 1) % 3];
+        if (from > to)
+        {
+          std::swap(from, to);
+        }
+        const double* A = this->Mesh.Point(from);
+        const double* B = this->Mesh.Point(to);
+        const double dA = side(A), dB = side(B);
+        const double u = dA / (dA - dB);
+        for (int k = 0; k < 3; ++k)
+        {
+          p.P[k] = A[k] + u * (B[k] - A[k]);
+        }
+      }
+      else
+      {
+        const double u = da / (da - db);
+        for (int k = 0; k < 3; ++k)
+        {
+          p.P[k] = a.P[k] + u * (b.P[k] - a.P[k]);
+        }
+      }
+    }
+    std::swap(polygon, clipped);
+    if (polygon.Size < 3)
+    {
+      polygon.Size = 0;
+      return false;
+    }
+  }
+  return polygon.Size >= 3;
+}
+
+//------------------------------------------------------------------------------
+// Exact integrals over the polygon (a fan of triangles) of rho, rho (x - s) and rho |x - s|^2
+// with rho linear over the mesh triangle: integral of l_a l_b l_c over a triangle of area A is
+// A/10, A/30 or A/60 for three, two or no equal indices.
+void RestrictedVoronoi::Internals::Integrate(
+  int t, int site, const Polygon& polygon, Piece& piece) const
+{
+  const double* s = &this->Sites[3 * static_cast<size_t>(site)];
+  piece.Site = site;
+  piece.Mass = piece.Energy = 0.0;
+  piece.Moment[0] = piece.Moment[1] = piece.Moment[2] = 0.0;
+  const bool uniform = this->Mesh.Density.empty();
+  double rho[MaximumPolygonSize];
+  if (!uniform)
+  {
+    const auto& tri = this->Mesh.Triangles[t];
+    for (int v = 0; v < polygon.Size; ++v)
+    {
+      double lambda[3];
+      this->Barycentric(t, polygon.V[v].P, lambda);
+      rho[v] = lambda[0] * this->Mesh.Density[tri[0]] + lambda[1] * this->Mesh.Density[tri[1]] +
+        lambda[2] * this->Mesh.Density[tri[2]];
+    }
+  }
+  const double* p0 = polygon.V[0].P;
+  const double u0[3] = { p0[0] - s[0], p0[1] - s[1], p0[2] - s[2] };
+  for (int v = 1; v + 1 < polygon.Size; ++v)
+  {
+    const double* p1 = polygon.V[v].P;
+    const double* p2 = polygon.V[v + 1].P;
+    const double u1[3] = { p1[0] - s[0], p1[1] - s[1], p1[2] - s[2] };
+    const double u2[3] = { p2[0] - s[0], p2[1] - s[1], p2[2] - s[2] };
+    const double e1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+    const double e2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+    double n[3];
+    Cross(e1, e2, n);
+    const double area = 0.5 * std::sqrt(Dot(n, n));
+    const double* u[3] = { u0, u1, u2 };
+    if (uniform)
+    {
+      piece.Mass += area;
+      for (int k = 0; k < 3; ++k)
+      {
+        piece.Moment[k] += area * (u0[k] + u1[k] + u2[k]) / 3.0;
+      }
+      piece.Energy += area / 6.0 *
+        (Dot(u0, u0) + Dot(u1, u1) + Dot(u2, u2) + Dot(u0, u1) + Dot(u1, u2) + Dot(u2, u0));
+      continue;
+    }
+    const double r[3] = { rho[0], rho[v], rho[v + 1] };
+    const double sum = r[0] + r[1] + r[2];
+    piece.Mass += area * sum / 3.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      piece.Moment[k] +=
+        area / 12.0 * ((r[0] + sum) * u0[k] + (r[1] + sum) * u1[k] + (r[2] + sum) * u2[k]);
+    }
+    double energy = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int b = 0; b < 3; ++b)
+      {
+        const double ub = Dot(u[a], u[b]);
+        for (int c = 0; c < 3; ++c)
+        {
+          const int equal = (a == b) + (b == c) + (a == c);
+          energy += r[c] * ub * (equal == 3 ? 1.0 / 10.0 : (equal == 1 ? 1.0 / 30.0 : 1.0 / 60.0));
+        }
+      }
+    }
+    piece.Energy += area * energy;
+  }
+}
+
+//------------------------------------------------------------------------------
+// The nearest point of the polygon to its site, and its boundary part (edges on the mesh
+// boundary, corners first).
+void RestrictedVoronoi::Internals::Contact(
+  int t, int site, const Polygon& polygon, SiteContact& contact) const
+{
+  const double* s = &this->Sites[3 * static_cast<size_t>(site)];
+  const double* n = &this->Normals[3 * static_cast<size_t>(t)];
+  contact.Site = site;
+  contact.Triangle = t;
+  contact.BoundaryRank = 0;
+  contact.BoundaryDistance2 = std::numeric_limits<double>::infinity();
+  // The projection onto the plane, when it falls inside the (convex) polygon.
+  const double height = (s[0] - polygon.V[0].P[0]) * n[0] + (s[1] - polygon.V[0].P[1]) * n[1] +
+    (s[2] - polygon.V[0].P[2]) * n[2];
+  const double q[3] = { s[0] - height * n[0], s[1] - height * n[1], s[2] - height * n[2] };
+  bool inside = true;
+  for (int v = 0; v < polygon.Size && inside; ++v)
+  {
+    const double* a = polygon.V[v].P;
+    const double* b = polygon.V[(v + 1) % polygon.Size].P;
+    const double e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double w[3] = { q[0] - a[0], q[1] - a[1], q[2] - a[2] };
+    double c[3];
+    Cross(e, w, c);
+    inside = Dot(c, n) >= 0.0;
+  }
+  if (inside)
+  {
+    contact.Distance2 = height * height;
+    std::copy(q, q + 3, contact.Point);
+  }
+  else
+  {
+    contact.Distance2 = std::numeric_limits<double>::infinity();
+  }
+  const auto& tri = this->Mesh.Triangles[t];
+  for (int v = 0; v < polygon.Size; ++v)
+  {
+    const PolygonVertex& a = polygon.V[v];
+    const PolygonVertex& b = polygon.V[(v + 1) % polygon.Size];
+    const double e[3] = { b.P[0] - a.P[0], b.P[1] - a.P[1], b.P[2] - a.P[2] };
+    const double length2 = Dot(e, e);
+    const double w[3] = { s[0] - a.P[0], s[1] - a.P[1], s[2] - a.P[2] };
+    const double u = length2 > 0.0 ? std::clamp(Dot(w, e) / length2, 0.0, 1.0) : 0.0;
+    const double p[3] = { a.P[0] + u * e[0], a.P[1] + u * e[1], a.P[2] + u * e[2] };
+    const double d2 = Distance2(p, s);
+    if (!inside && d2 < contact.Distance2)
+    {
+      contact.Distance2 = d2;
+      std::copy(p, p + 3, contact.Point);
+    }
+    if (a.Origin >= 0 && this->Corner[tri[a.Origin]])
+    {
+      const double dc = Distance2(a.P, s);
+      if (contact.BoundaryRank < 2 || dc < contact.BoundaryDistance2)
+      {
+        contact.BoundaryRank = 2;
+        contact.BoundaryDistance2 = dc;
+        std::copy(a.P, a.P + 3, contact.BoundaryPoint);
+      }
+    }
+    if (a.Label < 0 && this->OnMeshBoundary[t][-1 - a.Label] && contact.BoundaryRank < 2 &&
+      d2 < contact.BoundaryDistance2)
+    {
+      contact.BoundaryRank = 1;
+      contact.BoundaryDistance2 = d2;
+      std::copy(p, p + 3, contact.BoundaryPoint);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
+  std::vector<std::array<int, 3>>& triples, std::vector<SiteContact>& contacts,
+  std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const
+{
+  const auto& tri = this->Mesh.Triangles[t];
+  const int l0 = this->PointLabels[tri[0]], l1 = this->PointLabels[tri[1]],
+            l2 = this->PointLabels[tri[2]];
+  Polygon polygon;
+  Piece piece;
+  if (l0 == l1 && l1 == l2)
+  {
+    // Voronoi cells are convex: a triangle whose corners share a site lies in its cell.
+    polygon.Size = 3;
+    for (int k = 0; k < 3; ++k)
+    {
+      std::copy(this->Mesh.Point(tri[k]), this->Mesh.Point(tri[k]) + 3, polygon.V[k].P);
+      polygon.V[k].Label = -1 - k;
+      polygon.V[k].Origin = k;
+    }
+    this->Integrate(t, l0, polygon, piece);
+    pieces.push_back(piece);
+    if (dual)
+    {
+      contacts.emplace_back();
+      this->Contact(t, l0, polygon, contacts.back());
+    }
+    return;
+  }
+  // Breadth-first over the cells that reach the triangle, from its corners' sites.
+  int queue[MaximumPolygonSize];
+  int queued = 0;
+  for (int label : { l0, l1, l2 })
+  {
+    if (std::find(queue, queue + queued, label) == queue + queued)
+    {
+      queue[queued++] = label;
+    }
+  }
+  for (int next = 0; next < queued; ++next)
+  {
+    const int site = queue[next];
+    if (!this->ClipToCell(t, site, polygon, scratchIds, scratchD2))
+    {
+      continue;
+    }
+    this->Integrate(t, site, polygon, piece);
+    pieces.push_back(piece);
+    for (int v = 0; v < polygon.Size; ++v)
+    {
+      const int label = polygon.V[v].Label;
+      if (label >= 0 && queued < MaximumPolygonSize &&
+        std::find(queue, queue + queued, label) == queue + queued)
+      {
+        queue[queued++] = label;
+      }
+      const int before = polygon.V[(v + polygon.Size - 1) % polygon.Size].Label;
+      if (dual && label >= 0 && before >= 0)
+      {
+        // Around this point the cells come in the order site, before, label (counter-
+        // clockwise seen along the triangle's normal): the dual triangle's orientation.
+        std::array<int, 3> triple = { site, before, label };
+        std::rotate(triple.begin(), std::min_element(triple.begin(), triple.end()), triple.end());
+        triples.push_back(triple);
+      }
+    }
+    if (dual)
+    {
+      contacts.emplace_back();
+      this->Contact(t, site, polygon, contacts.back());
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void RestrictedVoronoi::Internals::LabelPoints()
+{
+  const int pointCount = this->Mesh.NumberOfPoints();
+  const int siteCount = static_cast<int>(this->Sites.size() / 3);
+  if (static_cast<int>(this->PointLabels.size()) != pointCount)
+  {
+    this->PointLabels.assign(pointCount, -1);
+  }
+  vtkSMPTools::For(0, pointCount, 1024,
+    [this, siteCount](int begin, int end)
+    {
+      for (int p = begin; p < end; ++p)
+      {
+        const double* x = this->Mesh.Point(p);
+        const int previous = this->PointLabels[p];
+        if (previous >= 0 && previous<siteCount&& this->K> 0)
+        {
+          // The previous site and its neighbours; the nearest of them is the nearest of all
+          // when no site beyond the neighbours can be closer (triangle inequality).
+          const double* s = &this->Sites[3 * static_cast<size_t>(previous)];
+          int best = previous;
+          double best2 = Distance2(x, s);
+          const std::uint32_t* ids = &this->Neighbors[static_cast<size_t>(previous) * this->K];
+          for (int n = 0; n < this->K; ++n)
+          {
+            const double d2 = Distance2(x, &this->Sites[3 * static_cast<size_t>(ids[n])]);
+            if (d2 < best2)
+            {
+              best2 = d2;
+              best = static_cast<int>(ids[n]);
+            }
+          }
+          const double reach =
+            std::sqrt(
+              this->NeighborDistance2[static_cast<size_t>(previous) * this->K + this->K - 1]) -
+            std::sqrt(Distance2(x, s));
+          if (reach > 0.0 && best2 < reach * reach)
+          {
+            this->PointLabels[p] = best;
+            continue;
+          }
+        }
+        std::uint32_t id = 0;
+        double d2 = 0.0;
+        this->Tree->knnSearch(x, 1, &id, &d2);
+        this->PointLabels[p] = static_cast<int>(id);
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void RestrictedVoronoi::Internals::Sweep(bool dual)
+{
+  this->LabelPoints();
+  const int triangleCount = this->Mesh.NumberOfTriangles();
+  const int blockSize = (triangleCount + this->BlockCount - 1) / this->BlockCount;
+  vtkSMPTools::For(0, this->BlockCount, 1,
+    [&](int first, int last)
+    {
+      std::vector<std::uint32_t> scratchIds;
+      std::vector<double> scratchD2;
+      for (int block = first; block < last; ++block)
+      {
+        std::vector<Piece>& pieces = this->BlockPieces[block];
+        std::vector<std::array<int, 3>>& triples = this->BlockTriples[block];
+        std::vector<SiteContact>& contacts = this->BlockContacts[block];
+        pieces.clear();
+        triples.clear();
+        contacts.clear();
+        const int end = std::min(triangleCount, (block + 1) * blockSize);
+        for (int t = block * blockSize; t < end; ++t)
+        {
+          this->ProcessTriangle(t, dual, pieces, triples, contacts, scratchIds, scratchD2);
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+RestrictedVoronoi::RestrictedVoronoi()
+  : Impl(new Internals)
+{
+  // ParaView's VTK defaults to the sequential backend; use the threads when they were built.
+  if (vtkSMPTools::GetBackend() && std::string(vtkSMPTools::GetBackend()) == "Sequential" &&
+    !std::getenv("VTK_SMP_BACKEND_IN_USE"))
+  {
+    vtkSMPTools::SetBackend("STDThread");
+  }
+}
+
+RestrictedVoronoi::~RestrictedVoronoi() = default;
+
+const std::vector<int>& RestrictedVoronoi::GetPointLabels() const
+{
+  return this->Impl->PointLabels;
+}
+
+//------------------------------------------------------------------------------
+bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
+{
+  Internals& d = *this->Impl;
+  if (mesh.Triangles.empty())
+  {
+    return this->Fail("the mesh has no triangles");
+  }
+  d.Mesh = mesh;
+  const int triangleCount = mesh.NumberOfTriangles();
+  d.Normals.assign(3 * static_cast<size_t>(triangleCount), 0.0);
+  d.OnMeshBoundary.assign(triangleCount, { 0, 0, 0 });
+  std::unordered_map<std::uint64_t, int> edgeUse;
+  const auto key = [](int a, int b)
+  {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+      static_cast<std::uint32_t>(std::max(a, b));
+  };
+  for (int t = 0; t < triangleCount; ++t)
+  {
+    const auto& tri = mesh.Triangles[t];
+    const double* a = mesh.Point(tri[0]);
+    const double* b = mesh.Point(tri[1]);
+    const double* c = mesh.Point(tri[2]);
+    const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    double* n = &d.Normals[3 * static_cast<size_t>(t)];
+    Cross(e1, e2, n);
+    const double length = std::sqrt(Dot(n, n));
+    for (int k = 0; k < 3; ++k)
+    {
+      n[k] = length > 0.0 ? n[k] / length : 0.0;
+    }
+    for (int e = 0; e < 3; ++e)
+    {
+      ++edgeUse[key(tri[e], tri[(e + 1) % 3])];
+    }
+  }
+  // Boundary edges, and the boundary points where the border turns by more than a threshold.
+  d.Corner.assign(mesh.NumberOfPoints(), 0);
+  std::vector<int> next(mesh.NumberOfPoints(), -1), previous(mesh.NumberOfPoints(), -1);
+  for (int t = 0; t < triangleCount; ++t)
+  {
+    const auto& tri = mesh.Triangles[t];
+    for (int e = 0; e < 3; ++e)
+    {
+      if (edgeUse[key(tri[e], tri[(e + 1) % 3])] == 1)
+      {
+        d.OnMeshBoundary[t][e] = 1;
+        next[tri[e]] = tri[(e + 1) % 3];
+        previous[tri[(e + 1) % 3]] = tri[e];
+      }
+    }
+  }
+  const double cosine = std::cos(CornerAngleDegrees * 3.14159265358979323846 / 180.0);
+  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    if (next[p] < 0 || previous[p] < 0)
+    {
+      continue;
+    }
+    const double* x = mesh.Point(p);
+    const double* a = mesh.Point(previous[p]);
+    const double* b = mesh.Point(next[p]);
+    const double in[3] = { x[0] - a[0], x[1] - a[1], x[2] - a[2] };
+    const double out[3] = { b[0] - x[0], b[1] - x[1], b[2] - x[2] };
+    const double lengths = std::sqrt(Dot(in, in) * Dot(out, out));
+    d.Corner[p] = lengths > 0.0 && Dot(in, out) < cosine * lengths;
+  }
+  // Fixed blocks of triangles: the sums are added in the same order for any thread count.
+  d.BlockCount = std::max(1, std::min(256, triangleCount / 256));
+  d.BlockPieces.assign(d.BlockCount, {});
+  d.BlockTriples.assign(d.BlockCount, {});
+  d.BlockContacts.assign(d.BlockCount, {});
+  d.PointLabels.assign(mesh.NumberOfPoints(), -1);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool RestrictedVoronoi::SetSites(const std::vector<double>& sites)
+{
+  Internals& d = *this->Impl;
+  if (sites.empty() || sites.size() % 3 != 0)
+  {
+    return this->Fail("the sites must be a non-empty list of x, y, z triples");
+  }
+  for (double c : sites)
+  {
+    if (!std::isfinite(c))
+    {
+      return this->Fail("a site has a NaN or infinite coordinate");
+    }
+  }
+  const bool sameCount = d.Sites.size() == sites.size();
+  d.Sites = sites;
+  if (!sameCount)
+  {
+    d.PointLabels.assign(d.Mesh.NumberOfPoints(), -1);
+  }
+  d.Cloud.Sites = &d.Sites;
+  d.Tree.reset(new SiteTree(3, d.Cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)));
+  const int siteCount = static_cast<int>(sites.size() / 3);
+  d.K = std::min(NeighborCount, siteCount - 1);
+  d.Neighbors.resize(static_cast<size_t>(siteCount) * d.K);
+  d.NeighborDistance2.resize(static_cast<size_t>(siteCount) * d.K);
+  if (d.K == 0)
+  {
+    return true;
+  }
+  vtkSMPTools::For(0, siteCount, 256,
+    [&d](int begin, int end)
+    {
+      std::uint32_t ids[NeighborCount + 1];
+      double d2[NeighborCount + 1];
+      for (int i = begin; i < end; ++i)
+      {
+        const size_t found =
+          d.Tree->knnSearch(&d.Sites[3 * static_cast<size_t>(i)], d.K + 1, ids, d2);
+        int kept = 0;
+        for (size_t f = 0; f < found && kept < d.K; ++f)
+        {
+          if (ids[f] != static_cast<std::uint32_t>(i))
+          {
+            d.Neighbors[static_cast<size_t>(i) * d.K + kept] = ids[f];
+            d.NeighborDistance2[static_cast<size_t>(i) * d.K + kept] = d2[f];
+            ++kept;
+          }
+        }
+        for (; kept < d.K; ++kept)
+        {
+          // Only when the site itself was not among the results (equal sites): repeat the last.
+          d.Neighbors[static_cast<size_t>(i) * d.K + kept] = ids[found - 1];
+          d.NeighborDistance2[static_cast<size_t>(i) * d.K + kept] = d2[found - 1];
+        }
+      }
+    });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool RestrictedVoronoi::ComputeCellSums(CellSums& sums)
+{
+  Internals& d = *this->Impl;
+  if (d.Mesh.Triangles.empty() || d.Sites.empty())
+  {
+    return this->Fail("set a mesh and sites before computing cell sums");
+  }
+  d.Sweep(false);
+  sums.Resize(d.Sites.size() / 3, true);
+  for (const auto& pieces : d.BlockPieces)
+  {
+    for (const Piece& piece : pieces)
+    {
+      sums.Mass[piece.Site] += piece.Mass;
+      sums.MomentX[piece.Site] += piece.Moment[0];
+      sums.MomentY[piece.Site] += piece.Moment[1];
+      sums.MomentZ[piece.Site] += piece.Moment[2];
+      sums.Energy[piece.Site] += piece.Energy;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
+{
+  Internals& d = *this->Impl;
+  if (d.Mesh.Triangles.empty() || d.Sites.empty())
+  {
+    return this->Fail("set a mesh and sites before computing the dual");
+  }
+  d.Sweep(true);
+  const size_t siteCount = d.Sites.size() / 3;
+  dual = RestrictedDual();
+  std::vector<std::array<int, 3>> triples;
+  for (const auto& block : d.BlockTriples)
+  {
+    triples.insert(triples.end(), block.begin(), block.end());
+  }
+  std::sort(triples.begin(), triples.end());
+  triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
+  dual.Triangles = std::move(triples);
+
+  dual.SurfacePoints.assign(3 * siteCount, 0.0);
+  dual.SurfaceTriangles.assign(siteCount, -1);
+  dual.SurfaceBarycentric.assign(3 * siteCount, 0.0);
+  dual.OnBoundary.assign(siteCount, 0);
+  dual.BoundaryPoints.assign(3 * siteCount, 0.0);
+  dual.BoundaryTriangles.assign(siteCount, -1);
+  dual.BoundaryBarycentric.assign(3 * siteCount, 0.0);
+  std::vector<double> nearest2(siteCount, std::numeric_limits<double>::infinity());
+  std::vector<int> boundaryRank(siteCount, 0);
+  std::vector<double> boundary2(siteCount, std::numeric_limits<double>::infinity());
+  for (const auto& block : d.BlockContacts)
+  {
+    for (const SiteContact& c : block)
+    {
+      const size_t i = static_cast<size_t>(c.Site);
+      if (c.Distance2 < nearest2[i])
+      {
+        nearest2[i] = c.Distance2;
+        std::copy(c.Point, c.Point + 3, &dual.SurfacePoints[3 * i]);
+        dual.SurfaceTriangles[i] = c.Triangle;
+      }
+      if (c.BoundaryRank > boundaryRank[i] ||
+        (c.BoundaryRank > 0 && c.BoundaryRank == boundaryRank[i] &&
+          c.BoundaryDistance2 < boundary2[i]))
+      {
+        boundaryRank[i] = c.BoundaryRank;
+        boundary2[i] = c.BoundaryDistance2;
+        std::copy(c.BoundaryPoint, c.BoundaryPoint + 3, &dual.BoundaryPoints[3 * i]);
+        dual.BoundaryTriangles[i] = c.Triangle;
+      }
+    }
+  }
+  for (size_t i = 0; i < siteCount; ++i)
+  {
+    if (dual.SurfaceTriangles[i] >= 0)
+    {
+      d.Barycentric(
+        dual.SurfaceTriangles[i], &dual.SurfacePoints[3 * i], &dual.SurfaceBarycentric[3 * i]);
+    }
+    dual.OnBoundary[i] = boundaryRank[i] > 0;
+    if (dual.OnBoundary[i])
+    {
+      d.Barycentric(
+        dual.BoundaryTriangles[i], &dual.BoundaryPoints[3 * i], &dual.BoundaryBarycentric[3 * i]);
+    }
+  }
+  return true;
+}
+
+} // namespace cvt

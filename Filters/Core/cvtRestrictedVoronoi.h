@@ -1,0 +1,67 @@
+// The restricted Voronoi diagram of 3D sites on a triangle mesh, computed exactly on the CPU:
+// every triangle is clipped by the bisector planes of the sites whose cells reach it (the
+// triangle-first algorithm with a security radius, Levy and Bonneel 2012), in parallel over
+// fixed blocks of triangles with vtkSMPTools, so the sums do not depend on the thread count.
+// It is the surface engine for any manifold mesh (any genus, boundaries, several parts), and
+// its dual, the restricted Delaunay triangulation, is the remesh.
+#ifndef cvtRestrictedVoronoi_h
+#define cvtRestrictedVoronoi_h
+
+#include "cvtCoreModule.h" // for export macro
+#include "cvtEngine.h"     // for CellSums, EngineErrors
+#include "cvtSurfaceMesh.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace cvt
+{
+
+/// The dual of the restricted Voronoi diagram and where each site meets the surface.
+struct RestrictedDual
+{
+  /// Sites i, j, k whose restricted cells meet at a point, oriented like the mesh.
+  std::vector<std::array<int, 3>> Triangles;
+  /// Per site (3 values each): the point of its restricted cell nearest to the site, the
+  /// triangle holding it (-1: the cell is empty) and its barycentric coordinates there.
+  std::vector<double> SurfacePoints;
+  std::vector<int> SurfaceTriangles;
+  std::vector<double> SurfaceBarycentric;
+  /// Per site: whether its cell meets the mesh boundary, and then the boundary point it is
+  /// pinned to in the remesh (a boundary corner of its cell, else its boundary point nearest
+  /// to the site), with triangle and barycentric coordinates as above.
+  std::vector<char> OnBoundary;
+  std::vector<double> BoundaryPoints;
+  std::vector<int> BoundaryTriangles;
+  std::vector<double> BoundaryBarycentric;
+};
+
+class CVTCORE_EXPORT RestrictedVoronoi : public EngineErrors
+{
+public:
+  RestrictedVoronoi();
+  ~RestrictedVoronoi();
+  RestrictedVoronoi(const RestrictedVoronoi&) = delete;
+  RestrictedVoronoi& operator=(const RestrictedVoronoi&) = delete;
+
+  /// The surface (edge-manifold and consistently oriented: see RepairSurfaceMesh).
+  bool SetMesh(const SurfaceMesh& mesh);
+  /// Sites as flat x, y, z; any number from 1 on, anywhere in space.
+  bool SetSites(const std::vector<double>& sites);
+  /// Mass, moments about the site (x, y, z) and energy of every restricted cell, with the
+  /// mesh's density interpolated linearly over each triangle (exact integrals).
+  bool ComputeCellSums(CellSums& sums);
+  /// The restricted Delaunay triangles and surface points of the current sites.
+  bool ComputeDual(RestrictedDual& dual);
+  /// The nearest site of every mesh point, from the last ComputeCellSums or ComputeDual.
+  const std::vector<int>& GetPointLabels() const;
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+} // namespace cvt
+
+#endif

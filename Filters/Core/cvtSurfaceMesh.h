@@ -1,0 +1,78 @@
+// Triangle meshes as the numerical core sees them: points, oriented triangles, an optional
+// density per point. Here: the repairs users expect before remeshing (degenerate and duplicate
+// triangles, non-manifold vertices, orientation), topology (components, genus, boundary loops)
+// and area-weighted sampling of sites.
+#ifndef cvtSurfaceMesh_h
+#define cvtSurfaceMesh_h
+
+#include "cvtCoreModule.h" // for export macro
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cvt
+{
+
+struct SurfaceMesh
+{
+  std::vector<double> Points; // x, y, z per point
+  std::vector<std::array<int, 3>> Triangles;
+  std::vector<double> Density; // one per point, > 0; empty = uniform
+  /// The input point each point came from (repairs split and drop points); empty = itself.
+  std::vector<int> SourceIds;
+
+  int NumberOfPoints() const { return static_cast<int>(this->Points.size() / 3); }
+  int NumberOfTriangles() const { return static_cast<int>(this->Triangles.size()); }
+  const double* Point(int i) const { return &this->Points[3 * static_cast<size_t>(i)]; }
+};
+
+/// What RepairSurfaceMesh changed.
+struct MeshRepairReport
+{
+  int DegenerateTriangles = 0; // zero area or a repeated point: dropped
+  int DuplicateTriangles = 0;  // same three points as another: dropped
+  int SplitPoints = 0;         // non-manifold points made into one point per fan
+  int FlippedTriangles = 0;    // reoriented to agree with their neighbours
+  int UnusedPoints = 0;        // points of no triangle: dropped
+  bool Changed() const;
+  /// One sentence listing what was done ("" when nothing was).
+  std::string Summary() const;
+};
+
+/// Prepares a mesh for remeshing: drops degenerate and duplicate triangles and unused points,
+/// splits non-manifold points (one copy per fan of triangles), orients every connected
+/// component consistently (closed ones outwards). Returns "" or what makes the mesh unusable:
+/// non-manifold edges (more than two triangles; with how many and where), a non-orientable
+/// component, no triangle left.
+CVTCORE_EXPORT std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report);
+
+/// Checks coordinates and density: "" or what is wrong (NaN or infinite coordinates, NaN,
+/// infinite, negative or all-zero density, wrong density size).
+CVTCORE_EXPORT std::string CheckSurfaceMesh(const SurfaceMesh& mesh);
+
+struct MeshTopology
+{
+  int Components = 0;
+  int BoundaryLoops = 0;
+  int EulerCharacteristic = 0;
+  int Genus = 0; // summed over the components: (2 - chi_c - loops_c) / 2
+  /// Each boundary loop as its points in order (the surface on the left, as the triangles).
+  std::vector<std::vector<int>> Loops;
+};
+
+/// Topology of an edge-manifold, consistently oriented mesh (after RepairSurfaceMesh).
+CVTCORE_EXPORT MeshTopology ComputeMeshTopology(
+  int numberOfPoints, const std::vector<std::array<int, 3>>& triangles);
+
+/// Total area, and each triangle's area times its mean density (the sampling weight).
+CVTCORE_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
+
+/// `count` points on the surface, drawn with probability proportional to area times density.
+CVTCORE_EXPORT std::vector<double> SampleMeshSites(
+  const SurfaceMesh& mesh, int count, std::uint64_t seed);
+
+} // namespace cvt
+
+#endif

@@ -1,0 +1,374 @@
+#include "vtkCVTRemeshFilter.h"
+
+#include "cvtMeshOptimizer.h"
+#include "cvtQuality.h"
+#include "cvtRemesh.h"
+#include "cvtRestrictedVoronoi.h"
+#include "cvtSurfaceMesh.h"
+#include "vtkCVTOutputHelpers.h"
+
+#include "vtkCellArray.h"
+#include "vtkCleanPolyData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkTable.h"
+#include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+vtkStandardNewMacro(vtkCVTRemeshFilter);
+
+namespace
+{
+/// The cleaned, triangulated input (coincident points merged, polygons and strips split).
+vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
+{
+  vtkNew<vtkCleanPolyData> merge;
+  merge->SetInputData(input);
+  merge->SetTolerance(0.0);
+  merge->PointMergingOn();
+  merge->ConvertLinesToPointsOff();
+  merge->ConvertPolysToLinesOff();
+  merge->ConvertStripsToPolysOff();
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(merge->GetOutputPort());
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(triangles->GetOutput());
+  return output;
+}
+
+/// The labels output: the repaired mesh, its point data taken from the input's points.
+void FillLabels(vtkPolyData* output, vtkPolyData* source, const cvt::SurfaceMesh& mesh,
+  const std::vector<int>& labels)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(mesh.NumberOfPoints());
+  vtkPointData* pd = output->GetPointData();
+  pd->CopyAllocate(source->GetPointData(), mesh.NumberOfPoints());
+  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    points->SetPoint(p, mesh.Point(p));
+    pd->CopyData(source->GetPointData(), mesh.SourceIds[p], p);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : mesh.Triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  vtkNew<vtkIntArray> siteIds;
+  siteIds->SetName("SiteId");
+  siteIds->SetNumberOfValues(mesh.NumberOfPoints());
+  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    siteIds->SetValue(p, labels[p]);
+  }
+  pd->AddArray(siteIds);
+}
+
+void AddTopology(vtkFieldData* fields, const char* prefix, const cvt::MeshTopology& topology)
+{
+  const std::string p(prefix);
+  cvtvtk::AddFieldValue(fields, (p + "Components").c_str(), topology.Components);
+  cvtvtk::AddFieldValue(fields, (p + "Genus").c_str(), topology.Genus);
+  cvtvtk::AddFieldValue(fields, (p + "BoundaryLoops").c_str(), topology.BoundaryLoops);
+  cvtvtk::AddFieldValue(fields, (p + "EulerCharacteristic").c_str(), topology.EulerCharacteristic);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkCVTRemeshFilter::vtkCVTRemeshFilter()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(4);
+}
+
+vtkPolyData* vtkCVTRemeshFilter::GetSitesOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(SitesPort));
+}
+vtkPolyData* vtkCVTRemeshFilter::GetLabelsOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(LabelsPort));
+}
+vtkPolyData* vtkCVTRemeshFilter::GetRemeshOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(RemeshPort));
+}
+vtkTable* vtkCVTRemeshFilter::GetHistoryOutput()
+{
+  return vtkTable::SafeDownCast(this->GetOutputDataObject(HistoryPort));
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTRemeshFilter::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == HistoryPort ? "vtkTable" : "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTRemeshFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
+  vtkPolyData* labelsOut = vtkPolyData::GetData(outputVector, LabelsPort);
+  vtkPolyData* remeshOut = vtkPolyData::GetData(outputVector, RemeshPort);
+  vtkTable* historyOut = vtkTable::GetData(outputVector, HistoryPort);
+  sitesOut->Initialize();
+  labelsOut->Initialize();
+  remeshOut->Initialize();
+  historyOut->Initialize();
+
+  // --- The input as a repaired triangle mesh.
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("The input mesh is empty; give a surface made of triangles or polygons.");
+    return 0;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("The input has no polygons (only points or lines); give a surface mesh.");
+    return 0;
+  }
+  vtkSmartPointer<vtkPolyData> triangles = Triangulate(input);
+  cvt::SurfaceMesh mesh;
+  mesh.Points.resize(3 * static_cast<size_t>(triangles->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < triangles->GetNumberOfPoints(); ++p)
+  {
+    triangles->GetPoint(p, &mesh.Points[3 * p]);
+  }
+  {
+    vtkCellArray* polys = triangles->GetPolys();
+    vtkNew<vtkIdList> ids;
+    mesh.Triangles.reserve(static_cast<size_t>(polys->GetNumberOfCells()));
+    for (polys->InitTraversal(); polys->GetNextCell(ids);)
+    {
+      if (ids->GetNumberOfIds() == 3)
+      {
+        mesh.Triangles.push_back({ static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
+          static_cast<int>(ids->GetId(2)) });
+      }
+    }
+  }
+  // "Uniform density" is what ParaView's array list offers for none.
+  if (!this->DensityArray.empty() && this->DensityArray != "Uniform density")
+  {
+    vtkDataArray* density = triangles->GetPointData()->GetArray(this->DensityArray.c_str());
+    if (!density || density->GetNumberOfComponents() != 1)
+    {
+      vtkErrorMacro("The input has no one-component point array '"
+        << this->DensityArray << "' to use as density; name a point array or leave it empty.");
+      return 0;
+    }
+    mesh.Density.resize(static_cast<size_t>(density->GetNumberOfTuples()));
+    for (vtkIdType p = 0; p < density->GetNumberOfTuples(); ++p)
+    {
+      mesh.Density[p] = density->GetTuple1(p);
+    }
+  }
+  std::string problem = cvt::CheckSurfaceMesh(mesh);
+  cvt::MeshRepairReport repairs;
+  if (problem.empty())
+  {
+    problem = cvt::RepairSurfaceMesh(mesh, repairs);
+  }
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Cannot remesh this input: " << problem << ".");
+    return 0;
+  }
+  // What cleaning did before the core's repairs: merged points, dropped degenerate cells.
+  const vtkIdType mergedPoints = input->GetNumberOfPoints() - triangles->GetNumberOfPoints();
+  if (repairs.Changed() || mergedPoints > 0)
+  {
+    std::string summary = repairs.Summary();
+    if (mergedPoints > 0)
+    {
+      summary = "merged coincident points: " + std::to_string(mergedPoints) +
+        (summary.empty() ? "" : ", ") + summary;
+    }
+    vtkWarningMacro("The input mesh was repaired: " << summary << ".");
+  }
+  if (this->NumberOfSites < 3)
+  {
+    vtkErrorMacro("NumberOfSites is " << this->NumberOfSites << "; a remesh needs at least 3.");
+    return 0;
+  }
+  const cvt::MeshTopology inputTopology =
+    cvt::ComputeMeshTopology(mesh.NumberOfPoints(), mesh.Triangles);
+
+  // --- Sites and the optimiser on the exact CPU engine.
+  const std::vector<double> initial =
+    cvt::SampleMeshSites(mesh, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed));
+  cvt::RestrictedVoronoi engine;
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+  options.Tolerance = this->Tolerance;
+  options.GradientTolerance = this->GradientTolerance;
+  options.NumberOfCorrections = this->NumberOfCorrections;
+  options.LloydWarmUpIterations = std::min(5, this->MaximumNumberOfIterations);
+  cvt::OptimizerResult result;
+  std::string error;
+  const auto progress = [this](double fraction)
+  {
+    this->UpdateProgress(0.95 * fraction);
+    return !this->GetAbortExecute();
+  };
+  const bool optimized = engine.SetMesh(mesh) &&
+    (this->Method == LLOYD ? cvt::RunMeshLloyd(engine, initial, options, progress, result, error)
+                           : cvt::RunMeshLBFGS(engine, initial, options, progress, result, error));
+  if (!optimized)
+  {
+    vtkErrorMacro(
+      "The surface CVT failed: " << (error.empty() ? engine.GetLastError() : error) << ".");
+    return 0;
+  }
+
+  // --- The dual, the sites on the surface, and their energy.
+  cvt::RestrictedDual dual;
+  cvt::CellSums sums;
+  std::vector<double> sites = result.Sites;
+  if (!engine.ComputeDual(dual))
+  {
+    vtkErrorMacro("The restricted Delaunay triangulation failed: " << engine.GetLastError() << ".");
+    return 0;
+  }
+  for (size_t i = 0; i < dual.SurfaceTriangles.size(); ++i)
+  {
+    if (dual.SurfaceTriangles[i] >= 0)
+    {
+      std::copy(&dual.SurfacePoints[3 * i], &dual.SurfacePoints[3 * i] + 3, &sites[3 * i]);
+    }
+  }
+  FillLabels(labelsOut, triangles, mesh, engine.GetPointLabels());
+  if (!engine.SetSites(sites) || !engine.ComputeCellSums(sums))
+  {
+    vtkErrorMacro("The surface CVT failed: " << engine.GetLastError() << ".");
+    return 0;
+  }
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual);
+
+  // --- Outputs.
+  cvtvtk::FillSites(sitesOut, sites, 3, 0.0, sums);
+  vtkFieldData* fields = sitesOut->GetFieldData();
+  cvtvtk::AddFieldValue(fields, "Energy", sums.TotalEnergy());
+  cvtvtk::AddFieldValue(fields, "GradientNorm", sums.GradientNorm());
+  cvtvtk::AddFieldValue(fields, "Iterations", result.Iterations);
+  cvtvtk::AddFieldValue(fields, "Evaluations", result.Evaluations);
+  cvtvtk::AddFieldValue(fields, "SurfaceArea", cvt::SurfaceArea(mesh));
+  cvtvtk::AddFieldString(fields, "StopReason", result.StopReason);
+  cvtvtk::AddFieldString(fields, "Engine", "CPU");
+  cvtvtk::AddFieldString(fields, "EngineReason",
+    std::string("exact restricted Voronoi cells on the input mesh, ") +
+      std::to_string(vtkSMPTools::GetEstimatedNumberOfThreads()) + " threads (" +
+      vtkSMPTools::GetBackend() + ")");
+  AddTopology(fields, "Input", inputTopology);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(remesh.SiteIds.size()));
+  vtkPointData* remeshPD = remeshOut->GetPointData();
+  vtkPointData* sourcePD = labelsOut->GetPointData();
+  remeshPD->InterpolateAllocate(sourcePD, static_cast<vtkIdType>(remesh.SiteIds.size()));
+  for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
+  {
+    points->SetPoint(static_cast<vtkIdType>(v), &remesh.Points[3 * v]);
+    const int t = std::max(0, remesh.SourceTriangles[v]);
+    vtkNew<vtkIdList> corners;
+    for (int k = 0; k < 3; ++k)
+    {
+      corners->InsertNextId(mesh.Triangles[t][k]);
+    }
+    double weights[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      weights[k] = std::min(1.0, std::max(0.0, remesh.SourceBarycentric[3 * v + k]));
+    }
+    remeshPD->InterpolatePoint(sourcePD, static_cast<vtkIdType>(v), corners, weights);
+  }
+  remeshPD->RemoveArray("SiteId");
+  vtkNew<vtkIntArray> remeshIds;
+  remeshIds->SetName("SiteId");
+  for (int site : remesh.SiteIds)
+  {
+    remeshIds->InsertNextValue(site);
+  }
+  remeshPD->AddArray(remeshIds);
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : remesh.Triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  remeshOut->SetPoints(points);
+  remeshOut->SetPolys(polys);
+  const cvt::MeshQuality quality = cvt::MeasureMesh(remesh.Points, remesh.Triangles);
+  vtkFieldData* remeshFields = remeshOut->GetFieldData();
+  cvtvtk::AddFieldValue(remeshFields, "Valence6Fraction", quality.Valence6Fraction);
+  cvtvtk::AddFieldValue(remeshFields, "MinimumAngle", quality.MinimumAngle);
+  cvtvtk::AddFieldValue(remeshFields, "MaximumAngle", quality.MaximumAngle);
+  cvtvtk::AddFieldValue(remeshFields, "RemovedTriangles", remesh.RemovedTriangles);
+  cvtvtk::AddFieldValue(remeshFields, "FilledHoles", remesh.FilledHoles);
+  for (const auto& histogram : { std::make_pair("ValenceHistogram", &quality.ValenceHistogram),
+         std::make_pair("AngleHistogram", &quality.AngleHistogram) })
+  {
+    vtkNew<vtkIntArray> counts;
+    counts->SetName(histogram.first);
+    for (int count : *histogram.second)
+    {
+      counts->InsertNextValue(count);
+    }
+    remeshFields->AddArray(counts);
+  }
+  const cvt::MeshTopology remeshTopology =
+    cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  AddTopology(remeshFields, "", remeshTopology);
+  AddTopology(remeshFields, "Input", inputTopology);
+  if (remeshTopology.Components != inputTopology.Components ||
+    remeshTopology.Genus != inputTopology.Genus ||
+    remeshTopology.BoundaryLoops != inputTopology.BoundaryLoops)
+  {
+    vtkWarningMacro("The remesh's topology differs from the input's ("
+      << remeshTopology.Components << " parts, genus " << remeshTopology.Genus << ", "
+      << remeshTopology.BoundaryLoops << " boundary loops against " << inputTopology.Components
+      << ", " << inputTopology.Genus << ", " << inputTopology.BoundaryLoops
+      << "): too few sites for the thinnest parts; use more sites.");
+  }
+  cvtvtk::FillHistoryTable(historyOut, result.History);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTRemeshFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "Method: " << (this->Method == LLOYD ? "Lloyd" : "L-BFGS") << "\n";
+  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
+  os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
+  os << indent
+     << "DensityArray: " << (this->DensityArray.empty() ? "(uniform)" : this->DensityArray) << "\n";
+}

@@ -1,0 +1,359 @@
+// vtkCVTRemeshFilter in VTK pipelines: topology of the remesh for closed, open, multi-part and
+// higher-genus inputs made here, repairs, densities and point arrays, abort, determinism and
+// every bad input (a clear error, empty outputs, RequestData returning 0).
+#include "vtkCVTRemeshFilter.h"
+
+#include "vtkAppendPolyData.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDiskSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSphereSource.h"
+#include "vtkTable.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+class Messages : public vtkCommand
+{
+public:
+  static Messages* New() { return new Messages; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
+      static_cast<const char*>(data);
+  }
+  std::string Errors, Warnings;
+};
+
+double Field(vtkDataObject* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetTuple1(0) : std::nan("");
+}
+
+/// Marching cubes of the union of `count` tori along x: a closed surface of genus `count`.
+vtkSmartPointer<vtkPolyData> Tori(int count)
+{
+  const int n = 72;
+  const double half = 0.8 * count + 1.0;
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(n, n / 2, n / 4);
+  field->SetOrigin(-half, -1.5, -0.6);
+  field->SetSpacing(2 * half / (n - 1), 3.0 / (n / 2 - 1), 1.2 / (n / 4 - 1));
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfValues(field->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < field->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    field->GetPoint(p, x);
+    double value = 1.0;
+    for (int k = 0; k < count; ++k)
+    {
+      const double cx = (k - (count - 1) / 2.0) * 1.6;
+      const double ring = std::hypot(x[0] - cx, x[1]) - 1.0;
+      value = std::min(value, ring * ring + x[2] * x[2] - 0.35 * 0.35);
+    }
+    values->SetValue(p, value);
+  }
+  field->GetPointData()->SetScalars(values);
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(field);
+  contour->SetValue(0, 0.0);
+  contour->ComputeNormalsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->ShallowCopy(contour->GetOutput());
+  return surface;
+}
+
+vtkSmartPointer<vtkPolyData> Sphere(double radius = 1.0, double x = 0.0)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(radius);
+  sphere->SetCenter(x, 0, 0);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(32);
+  sphere->Update();
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(sphere->GetOutput());
+  return output;
+}
+
+struct RemeshRun
+{
+  vtkNew<vtkCVTRemeshFilter> Filter;
+  vtkNew<Messages> Log;
+  int Status = 0;
+  explicit RemeshRun(vtkPolyData* input, int sites = 200, int iterations = 40)
+  {
+    this->Filter->SetInputData(input);
+    this->Filter->SetNumberOfSites(sites);
+    this->Filter->SetMaximumNumberOfIterations(iterations);
+    this->Filter->AddObserver(vtkCommand::ErrorEvent, this->Log);
+    this->Filter->AddObserver(vtkCommand::WarningEvent, this->Log);
+    this->Filter->Update();
+    this->Status = this->Log->Errors.empty();
+  }
+  vtkPolyData* Remesh() { return this->Filter->GetRemeshOutput(); }
+};
+
+void ExpectTopology(vtkPolyData* remesh, int components, int genus, int loops)
+{
+  EXPECT_EQ(Field(remesh, "Components"), components);
+  EXPECT_EQ(Field(remesh, "Genus"), genus);
+  EXPECT_EQ(Field(remesh, "BoundaryLoops"), loops);
+  EXPECT_EQ(Field(remesh, "InputComponents"), components);
+  EXPECT_EQ(Field(remesh, "InputGenus"), genus);
+  EXPECT_EQ(Field(remesh, "InputBoundaryLoops"), loops);
+}
+
+void ExpectEmptyOutputs(vtkCVTRemeshFilter* filter)
+{
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetLabelsOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetRemeshOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetHistoryOutput()->GetNumberOfRows(), 0);
+}
+}
+
+TEST(RemeshFilter, SphereBecomesAGoodClosedSphere)
+{
+  RemeshRun run(Sphere(), 300, 100);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  vtkPolyData* remesh = run.Remesh();
+  EXPECT_EQ(remesh->GetNumberOfPoints(), 300);
+  ExpectTopology(remesh, 1, 0, 0);
+  EXPECT_EQ(Field(remesh, "EulerCharacteristic"), 2);
+  EXPECT_GT(Field(remesh, "Valence6Fraction"), 0.75);
+  EXPECT_GT(Field(remesh, "MinimumAngle"), 25.0);
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_EQ(sites->GetNumberOfPoints(), 300);
+  const double area = Field(sites, "SurfaceArea");
+  EXPECT_NEAR(area, 4 * 3.14159265, 0.02 * area);
+  EXPECT_LT(Field(sites, "Energy") * 300 / (area * area), 0.166);
+  EXPECT_GT(run.Filter->GetHistoryOutput()->GetNumberOfRows(), 10);
+  // Labels: the input with each point's nearest site.
+  EXPECT_NE(run.Filter->GetLabelsOutput()->GetPointData()->GetArray("SiteId"), nullptr);
+}
+
+TEST(RemeshFilter, GenusTwoAndTwoPartsKeepTheirTopology)
+{
+  {
+    RemeshRun run(Tori(2), 400, 60);
+    ASSERT_TRUE(run.Status) << run.Log->Errors;
+    ExpectTopology(run.Remesh(), 1, 2, 0);
+  }
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputData(Sphere(1.0, 0.0));
+  both->AddInputData(Sphere(0.5, 2.0));
+  both->Update();
+  RemeshRun run(both->GetOutput(), 300, 60);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 2, 0, 0);
+}
+
+TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)
+{
+  vtkNew<vtkDiskSource> disk;
+  disk->SetInnerRadius(0.3);
+  disk->SetOuterRadius(1.0);
+  disk->SetRadialResolution(12);
+  disk->SetCircumferentialResolution(72);
+  disk->Update();
+  vtkNew<vtkPolyData> annulus; // quads: triangulated by the filter
+  annulus->ShallowCopy(disk->GetOutput());
+  vtkNew<vtkDoubleArray> x, density;
+  x->SetName("X");
+  density->SetName("Density");
+  for (vtkIdType p = 0; p < annulus->GetNumberOfPoints(); ++p)
+  {
+    x->InsertNextValue(annulus->GetPoint(p)[0]);
+    density->InsertNextValue(annulus->GetPoint(p)[0] > 0 ? 4.0 : 1.0);
+  }
+  annulus->GetPointData()->AddArray(x);
+  annulus->GetPointData()->AddArray(density);
+  RemeshRun run(annulus, 300, 60);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 1, 0, 2);
+  // Border vertices lie on the circles; the X array follows the vertices.
+  vtkPolyData* remesh = run.Remesh();
+  vtkDataArray* interpolated = remesh->GetPointData()->GetArray("X");
+  ASSERT_NE(interpolated, nullptr);
+  int onCircles = 0;
+  for (vtkIdType v = 0; v < remesh->GetNumberOfPoints(); ++v)
+  {
+    const double* p = remesh->GetPoint(v);
+    EXPECT_NEAR(interpolated->GetTuple1(v), p[0], 1e-9);
+    const double r = std::hypot(p[0], p[1]);
+    EXPECT_LE(r, 1.0 + 1e-9);
+    EXPECT_GE(r, 0.3 * std::cos(3.14159265 / 72) - 1e-9);
+    onCircles += std::abs(r - 1.0) < 1e-3 || std::abs(r - 0.3) < 1e-2;
+  }
+  EXPECT_GT(onCircles, 30);
+
+  // With the density, the right half (4 times denser) holds more sites.
+  run.Filter->SetDensityArray("Density");
+  run.Filter->Update();
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  int right = 0;
+  for (vtkIdType i = 0; i < sites->GetNumberOfPoints(); ++i)
+  {
+    right += sites->GetPoint(i)[0] > 0;
+  }
+  EXPECT_GT(right, 0.6 * sites->GetNumberOfPoints());
+}
+
+TEST(RemeshFilter, RepairsAndReportsDirtyInput)
+{
+  // Every triangle with its own points, plus a duplicate triangle: merged and reported.
+  vtkSmartPointer<vtkPolyData> clean = Sphere();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  for (vtkIdType c = 0; c <= clean->GetNumberOfCells(); ++c)
+  {
+    vtkCell* cell = clean->GetCell(c % clean->GetNumberOfCells());
+    polys->InsertNextCell(3);
+    for (int k = 0; k < 3; ++k)
+    {
+      polys->InsertCellPoint(points->InsertNextPoint(clean->GetPoint(cell->GetPointId(k))));
+    }
+  }
+  vtkNew<vtkPolyData> soup;
+  soup->SetPoints(points);
+  soup->SetPolys(polys);
+  RemeshRun run(soup, 150, 20);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  EXPECT_NE(run.Log->Warnings.find("merged coincident points"), std::string::npos);
+  EXPECT_NE(run.Log->Warnings.find("dropped duplicate triangles: 1"), std::string::npos);
+  ExpectTopology(run.Remesh(), 1, 0, 0);
+}
+
+TEST(RemeshFilter, SameSeedSameResultAndAbortStops)
+{
+  RemeshRun first(Sphere(), 200, 15);
+  RemeshRun second(Sphere(), 200, 15);
+  ASSERT_TRUE(first.Status && second.Status);
+  vtkPolyData* a = first.Filter->GetSitesOutput();
+  vtkPolyData* b = second.Filter->GetSitesOutput();
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ASSERT_EQ(a->GetPoint(i)[k], b->GetPoint(i)[k]);
+    }
+  }
+  // Progress every iteration; aborting at the third stops the run with the best sites.
+  vtkNew<vtkCVTRemeshFilter> filter;
+  filter->SetInputData(Sphere());
+  filter->SetNumberOfSites(200);
+  filter->SetMaximumNumberOfIterations(100);
+  int calls = 0;
+  vtkNew<vtkCallbackCommand> progress;
+  struct State
+  {
+    vtkCVTRemeshFilter* Filter;
+    int* Calls;
+  } state{ filter, &calls };
+  progress->SetClientData(&state);
+  progress->SetCallback(
+    [](vtkObject*, unsigned long, void* client, void*)
+    {
+      auto* s = static_cast<State*>(client);
+      if (++*s->Calls == 3)
+      {
+        s->Filter->SetAbortExecute(1);
+      }
+    });
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
+  filter->Update();
+  EXPECT_LT(calls, 8);
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 200);
+  EXPECT_EQ(filter->GetSitesOutput()
+              ->GetFieldData()
+              ->GetAbstractArray("StopReason")
+              ->GetVariantValue(0)
+              .ToString(),
+    "aborted");
+  std::ostringstream text;
+  filter->Print(text);
+  EXPECT_NE(text.str().find("NumberOfSites: 200"), std::string::npos);
+}
+
+TEST(RemeshFilter, BadInputGivesAClearErrorAndEmptyOutputs)
+{
+  const auto expectError =
+    [](vtkPolyData* input, const std::string& part, int sites = 100, const char* density = "")
+  {
+    vtkNew<vtkCVTRemeshFilter> filter;
+    vtkNew<Messages> log;
+    filter->AddObserver(vtkCommand::ErrorEvent, log);
+    filter->SetInputData(input);
+    filter->SetNumberOfSites(sites);
+    filter->SetDensityArray(density);
+    filter->Update();
+    EXPECT_NE(log->Errors.find(part), std::string::npos) << "got: " << log->Errors;
+    ExpectEmptyOutputs(filter);
+  };
+  vtkNew<vtkPolyData> empty;
+  expectError(empty, "empty");
+  // Only lines.
+  vtkNew<vtkPolyData> lines;
+  vtkNew<vtkPoints> linePoints;
+  linePoints->InsertNextPoint(0, 0, 0);
+  linePoints->InsertNextPoint(1, 0, 0);
+  vtkNew<vtkCellArray> segment;
+  const vtkIdType ids[2] = { 0, 1 };
+  segment->InsertNextCell(2, ids);
+  lines->SetPoints(linePoints);
+  lines->SetLines(segment);
+  expectError(lines, "no polygons");
+  // NaN coordinates.
+  vtkNew<vtkPolyData> nan;
+  nan->DeepCopy(Sphere());
+  nan->GetPoints()->SetPoint(3, std::nan(""), 0, 0);
+  expectError(nan, "NaN or infinite point coordinates");
+  // A fin: three triangles on one edge.
+  vtkNew<vtkPolyData> fin;
+  vtkNew<vtkPoints> finPoints;
+  for (const auto& p :
+    { std::array<double, 3>{ 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } })
+  {
+    finPoints->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> finPolys;
+  for (auto t : { std::array<vtkIdType, 3>{ 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } })
+  {
+    finPolys->InsertNextCell(3, t.data());
+  }
+  fin->SetPoints(finPoints);
+  fin->SetPolys(finPolys);
+  expectError(fin, "1 non-manifold edges");
+  // Densities.
+  vtkNew<vtkPolyData> dense;
+  dense->DeepCopy(Sphere());
+  vtkNew<vtkDoubleArray> bad;
+  bad->SetName("Bad");
+  bad->SetNumberOfValues(dense->GetNumberOfPoints());
+  bad->FillValue(1.0);
+  bad->SetValue(5, -1.0);
+  dense->GetPointData()->AddArray(bad);
+  expectError(dense, "negative", 100, "Bad");
+  expectError(dense, "no one-component point array 'Missing'", 100, "Missing");
+  expectError(Sphere(), "at least 3", 2);
+}

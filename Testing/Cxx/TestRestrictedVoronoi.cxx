@@ -1,0 +1,455 @@
+// The exact CPU surface engine (restricted Voronoi cells on a triangle mesh), its dual and the
+// mesh repairs, against independent computations: exact 2D Voronoi polygons for a flat mesh,
+// brute-force nearest sites on a fine quadrature for a curved one.
+#include "cvtExactVoronoi.h"
+#include "cvtMeshOptimizer.h"
+#include "cvtRemesh.h"
+#include "cvtRestrictedVoronoi.h"
+#include "cvtSampling.h"
+#include "cvtSurfaceMesh.h"
+
+#include "vtkSMPTools.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+namespace
+{
+/// The square [lo, hi]^2 at z = 0 as an n x n grid of quads, two triangles each.
+cvt::SurfaceMesh FlatSquare(int n, double lo, double hi)
+{
+  cvt::SurfaceMesh mesh;
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      mesh.Points.insert(
+        mesh.Points.end(), { lo + (hi - lo) * i / n, lo + (hi - lo) * j / n, 0.0 });
+    }
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      mesh.Triangles.push_back({ a, b, c });
+      mesh.Triangles.push_back({ a, c, d });
+    }
+  }
+  return mesh;
+}
+
+/// A unit sphere: an octahedron subdivided `levels` times, points pushed onto the sphere.
+cvt::SurfaceMesh Sphere(int levels)
+{
+  cvt::SurfaceMesh mesh;
+  mesh.Points = { 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1 };
+  mesh.Triangles = { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 },
+    { 3, 1, 5 }, { 0, 3, 5 } };
+  for (int level = 0; level < levels; ++level)
+  {
+    std::map<std::pair<int, int>, int> middle;
+    const auto midpoint = [&mesh, &middle](int a, int b)
+    {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto found = middle.find(key);
+      if (found != middle.end())
+      {
+        return found->second;
+      }
+      double p[3];
+      double length = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = 0.5 * (mesh.Points[3 * a + k] + mesh.Points[3 * b + k]);
+        length += p[k] * p[k];
+      }
+      for (double& c : p)
+      {
+        mesh.Points.push_back(c / std::sqrt(length));
+      }
+      return middle[key] = mesh.NumberOfPoints() - 1;
+    };
+    std::vector<std::array<int, 3>> finer;
+    for (const auto& t : mesh.Triangles)
+    {
+      const int ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      finer.push_back({ t[0], ab, ca });
+      finer.push_back({ ab, t[1], bc });
+      finer.push_back({ ca, bc, t[2] });
+      finer.push_back({ ab, bc, ca });
+    }
+    mesh.Triangles = finer;
+  }
+  return mesh;
+}
+
+/// Brute force: every triangle cut into m^2 similar pieces, each given by its centroid to the
+/// nearest site (density interpolated linearly at the centroid).
+cvt::CellSums BruteForceSums(const cvt::SurfaceMesh& mesh, const std::vector<double>& sites, int m)
+{
+  cvt::CellSums sums;
+  const size_t n = sites.size() / 3;
+  sums.Resize(n, true);
+  for (const auto& t : mesh.Triangles)
+  {
+    const double* a = mesh.Point(t[0]);
+    const double* b = mesh.Point(t[1]);
+    const double* c = mesh.Point(t[2]);
+    const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    const double cross[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
+    const double piece =
+      0.5 * std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]) / (m * m);
+    for (int i = 0; i < m; ++i)
+    {
+      for (int j = 0; i + j < m; ++j)
+      {
+        for (int flip = 0; flip < (i + j + 1 < m ? 2 : 1); ++flip)
+        {
+          const double u = flip ? (i + 2.0 / 3.0) / m : (i + 1.0 / 3.0) / m;
+          const double v = flip ? (j + 2.0 / 3.0) / m : (j + 1.0 / 3.0) / m;
+          const double x[3] = { a[0] + u * e1[0] + v * e2[0], a[1] + u * e1[1] + v * e2[1],
+            a[2] + u * e1[2] + v * e2[2] };
+          const double rho = mesh.Density.empty()
+            ? 1.0
+            : (1 - u - v) * mesh.Density[t[0]] + u * mesh.Density[t[1]] + v * mesh.Density[t[2]];
+          size_t best = 0;
+          double best2 = 1e300;
+          for (size_t s = 0; s < n; ++s)
+          {
+            const double d2 = std::pow(x[0] - sites[3 * s], 2) +
+              std::pow(x[1] - sites[3 * s + 1], 2) + std::pow(x[2] - sites[3 * s + 2], 2);
+            if (d2 < best2)
+            {
+              best2 = d2;
+              best = s;
+            }
+          }
+          sums.Mass[best] += rho * piece;
+          sums.MomentX[best] += rho * piece * (x[0] - sites[3 * best]);
+          sums.MomentY[best] += rho * piece * (x[1] - sites[3 * best + 1]);
+          sums.MomentZ[best] += rho * piece * (x[2] - sites[3 * best + 2]);
+          sums.Energy[best] += rho * piece * best2;
+        }
+      }
+    }
+  }
+  return sums;
+}
+
+/// Random sites near the unit sphere, some off it (the restricted CVT's sites are free).
+std::vector<double> SitesNearSphere(int count, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::vector<double> sites;
+  while (static_cast<int>(sites.size()) < 3 * count)
+  {
+    double p[3], length = 0.0;
+    for (double& c : p)
+    {
+      c = 2.0 * cvt::Uniform01(rng) - 1.0;
+      length += c * c;
+    }
+    if (length < 1e-3 || length > 1.0)
+    {
+      continue;
+    }
+    const double radius = 0.9 + 0.2 * cvt::Uniform01(rng);
+    for (double c : p)
+    {
+      sites.push_back(radius * c / std::sqrt(length));
+    }
+  }
+  return sites;
+}
+}
+
+TEST(RestrictedVoronoi, FlatMeshMatchesExactVoronoiPolygons)
+{
+  // On a flat mesh the restricted cells are the 2D Voronoi cells clipped to the square: the
+  // exact 2D reference integrates them as polygons, independently of any triangle.
+  const cvt::SurfaceMesh mesh = FlatSquare(7, -1.0, 1.0);
+  const cvt::Grid grid = cvt::Grid::Square(64, -1.0, 1.0);
+  const std::vector<double> sites2D = cvt::SampleSites(grid, {}, 60, 3);
+  std::vector<double> sites;
+  for (size_t i = 0; i < sites2D.size() / 2; ++i)
+  {
+    sites.insert(sites.end(), { sites2D[2 * i], sites2D[2 * i + 1], 0.0 });
+  }
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(mesh));
+  ASSERT_TRUE(engine.SetSites(sites));
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine.ComputeCellSums(sums));
+  const cvt::CellSums exact = cvt::ExactCellSums(grid, sites2D, {});
+  for (size_t i = 0; i < exact.Size(); ++i)
+  {
+    EXPECT_NEAR(sums.Mass[i], exact.Mass[i], 1e-12) << "site " << i;
+    EXPECT_NEAR(sums.MomentX[i], exact.MomentX[i], 1e-12);
+    EXPECT_NEAR(sums.MomentY[i], exact.MomentY[i], 1e-12);
+    EXPECT_NEAR(sums.MomentZ[i], 0.0, 1e-14);
+    EXPECT_NEAR(sums.Energy[i], exact.Energy[i], 1e-12);
+  }
+}
+
+TEST(RestrictedVoronoi, CurvedMeshMatchesBruteForce)
+{
+  cvt::SurfaceMesh mesh = Sphere(3);
+  const std::vector<double> sites = SitesNearSphere(40, 5);
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(mesh));
+  ASSERT_TRUE(engine.SetSites(sites));
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine.ComputeCellSums(sums));
+  const cvt::CellSums brute = BruteForceSums(mesh, sites, 24);
+  EXPECT_NEAR(sums.TotalEnergy(), brute.TotalEnergy(), 2e-3 * brute.TotalEnergy());
+  double area = 0.0;
+  for (size_t i = 0; i < sums.Size(); ++i)
+  {
+    area += sums.Mass[i];
+    EXPECT_NEAR(sums.Mass[i], brute.Mass[i], 0.01 * brute.Mass[i] + 1e-4) << "site " << i;
+    EXPECT_NEAR(sums.Energy[i], brute.Energy[i], 0.02 * brute.Energy[i] + 1e-5) << "site " << i;
+  }
+  EXPECT_NEAR(area, cvt::SurfaceArea(mesh), 1e-12 * area);
+
+  // A linear density (1 + z + 1): still exact against the quadrature.
+  mesh.Density.resize(mesh.NumberOfPoints());
+  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    mesh.Density[p] = 2.0 + mesh.Point(p)[2];
+  }
+  ASSERT_TRUE(engine.SetMesh(mesh));
+  ASSERT_TRUE(engine.SetSites(sites));
+  ASSERT_TRUE(engine.ComputeCellSums(sums));
+  const cvt::CellSums weighted = BruteForceSums(mesh, sites, 24);
+  EXPECT_NEAR(sums.TotalEnergy(), weighted.TotalEnergy(), 2e-3 * weighted.TotalEnergy());
+  double mass = 0.0, bruteMass = 0.0;
+  for (size_t i = 0; i < sums.Size(); ++i)
+  {
+    mass += sums.Mass[i];
+    bruteMass += weighted.Mass[i];
+  }
+  EXPECT_NEAR(mass, bruteMass, 1e-9 * mass);
+}
+
+TEST(RestrictedVoronoi, GradientIsMinusTwiceTheMoment)
+{
+  const cvt::SurfaceMesh mesh = Sphere(3);
+  std::vector<double> sites = SitesNearSphere(30, 8);
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(mesh));
+  cvt::CellSums sums, plus, minus;
+  ASSERT_TRUE(engine.SetSites(sites) && engine.ComputeCellSums(sums));
+  const double h = 1e-6;
+  for (int k : { 0, 4, 17, 50, 88 })
+  {
+    std::vector<double> moved = sites;
+    moved[k] += h;
+    ASSERT_TRUE(engine.SetSites(moved) && engine.ComputeCellSums(plus));
+    moved[k] -= 2 * h;
+    ASSERT_TRUE(engine.SetSites(moved) && engine.ComputeCellSums(minus));
+    const double numeric = (plus.TotalEnergy() - minus.TotalEnergy()) / (2 * h);
+    const std::vector<double>* moment[3] = { &sums.MomentX, &sums.MomentY, &sums.MomentZ };
+    const double analytic = -2.0 * (*moment[k % 3])[k / 3];
+    EXPECT_NEAR(numeric, analytic, 1e-5 * (1.0 + std::abs(analytic))) << "coordinate " << k;
+  }
+}
+
+TEST(RestrictedVoronoi, SumsDoNotDependOnTheThreadCount)
+{
+  const cvt::SurfaceMesh mesh = Sphere(4);
+  const std::vector<double> sites = SitesNearSphere(200, 9);
+  cvt::CellSums one, two;
+  {
+    vtkSMPTools::Initialize(1);
+    cvt::RestrictedVoronoi engine;
+    ASSERT_TRUE(engine.SetMesh(mesh) && engine.SetSites(sites) && engine.ComputeCellSums(one));
+  }
+  {
+    vtkSMPTools::Initialize(2);
+    cvt::RestrictedVoronoi engine;
+    ASSERT_TRUE(engine.SetMesh(mesh) && engine.SetSites(sites) && engine.ComputeCellSums(two));
+  }
+  EXPECT_EQ(one.Energy, two.Energy);
+  EXPECT_EQ(one.MomentX, two.MomentX);
+}
+
+TEST(RestrictedVoronoi, OptimisedSphereRemeshIsAClosedOrientedSphere)
+{
+  const cvt::SurfaceMesh mesh = Sphere(4);
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(mesh));
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = 60;
+  options.LloydWarmUpIterations = 5;
+  cvt::OptimizerResult result;
+  std::string error;
+  const std::vector<double> initial = cvt::SampleMeshSites(mesh, 300, 4);
+  ASSERT_TRUE(cvt::RunMeshLBFGS(engine, initial, options, nullptr, result, error)) << error;
+  EXPECT_LT(result.History.back().Energy, 0.7 * result.History.front().Energy);
+  // Normalised energy of a good CVT: about 0.16 (hexagons), random sites about 0.32.
+  const double area = cvt::SurfaceArea(mesh);
+  EXPECT_LT(result.Sums.TotalEnergy() * 300 / (area * area), 0.165);
+  cvt::RestrictedDual dual;
+  ASSERT_TRUE(engine.ComputeDual(dual));
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual);
+  const cvt::MeshTopology topology =
+    cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  EXPECT_EQ(topology.Components, 1);
+  EXPECT_EQ(topology.BoundaryLoops, 0);
+  EXPECT_EQ(topology.EulerCharacteristic, 2);
+  EXPECT_EQ(remesh.SiteIds.size(), 300u);
+  // Outward: every triangle's normal points away from the centre.
+  for (const auto& t : remesh.Triangles)
+  {
+    const double* a = &remesh.Points[3 * t[0]];
+    const double* b = &remesh.Points[3 * t[1]];
+    const double* c = &remesh.Points[3 * t[2]];
+    const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
+    EXPECT_GT(n[0] * a[0] + n[1] * a[1] + n[2] * a[2], 0.0);
+  }
+  // Vertices lie on the surface (within the chord error of the mesh).
+  for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
+  {
+    const double* p = &remesh.Points[3 * v];
+    EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.0, 0.01);
+  }
+}
+
+TEST(RestrictedVoronoi, OpenSquareRemeshKeepsItsBorder)
+{
+  const cvt::SurfaceMesh mesh = FlatSquare(20, 0.0, 1.0);
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(mesh));
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = 40;
+  cvt::OptimizerResult result;
+  std::string error;
+  ASSERT_TRUE(
+    cvt::RunMeshLloyd(engine, cvt::SampleMeshSites(mesh, 100, 2), options, nullptr, result, error));
+  cvt::RestrictedDual dual;
+  ASSERT_TRUE(engine.ComputeDual(dual));
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual);
+  const cvt::MeshTopology topology =
+    cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  EXPECT_EQ(topology.Components, 1);
+  EXPECT_EQ(topology.BoundaryLoops, 1);
+  EXPECT_EQ(topology.EulerCharacteristic, 1);
+  // The border loop's vertices lie on the square's border, its four corners among them.
+  ASSERT_EQ(topology.Loops.size(), 1u);
+  int corners = 0;
+  for (int v : topology.Loops[0])
+  {
+    const double x = remesh.Points[3 * v], y = remesh.Points[3 * v + 1];
+    const double toBorder = std::min({ x, 1.0 - x, y, 1.0 - y });
+    EXPECT_NEAR(toBorder, 0.0, 1e-12);
+    corners += (x == 0.0 || x == 1.0) && (y == 0.0 || y == 1.0);
+  }
+  EXPECT_EQ(corners, 4);
+}
+
+TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
+{
+  // A square of two triangles, one flipped, plus a duplicate, a degenerate and an unused point.
+  cvt::SurfaceMesh mesh;
+  mesh.Points = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 5, 5, 5 };
+  mesh.Triangles = { { 0, 1, 2 }, { 0, 2, 3 }, { 2, 1, 0 }, { 0, 0, 3 } };
+  mesh.Triangles[1] = { 0, 3, 2 }; // flipped against its neighbour
+  cvt::MeshRepairReport report;
+  EXPECT_EQ(cvt::RepairSurfaceMesh(mesh, report), "");
+  EXPECT_EQ(report.DuplicateTriangles, 1);
+  EXPECT_EQ(report.DegenerateTriangles, 1);
+  EXPECT_EQ(report.FlippedTriangles, 1);
+  EXPECT_EQ(report.UnusedPoints, 1);
+  EXPECT_EQ(mesh.NumberOfTriangles(), 2);
+  const cvt::MeshTopology square = cvt::ComputeMeshTopology(mesh.NumberOfPoints(), mesh.Triangles);
+  EXPECT_EQ(square.BoundaryLoops, 1);
+  EXPECT_EQ(square.EulerCharacteristic, 1);
+
+  // Two squares sharing one corner point: the point is split, one copy per fan.
+  cvt::SurfaceMesh bowtie;
+  bowtie.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0 };
+  bowtie.Triangles = { { 0, 1, 2 }, { 0, 3, 4 } };
+  EXPECT_EQ(cvt::RepairSurfaceMesh(bowtie, report), "");
+  EXPECT_EQ(report.SplitPoints, 1);
+  EXPECT_EQ(cvt::ComputeMeshTopology(bowtie.NumberOfPoints(), bowtie.Triangles).Components, 2);
+
+  // Three triangles on one edge.
+  cvt::SurfaceMesh fin;
+  fin.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1 };
+  fin.Triangles = { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } };
+  EXPECT_NE(cvt::RepairSurfaceMesh(fin, report).find("1 non-manifold edges"), std::string::npos);
+
+  // A Moebius strip.
+  cvt::SurfaceMesh strip;
+  const int n = 12;
+  for (int i = 0; i < n; ++i)
+  {
+    const double angle = 2.0 * 3.14159265358979 * i / n, twist = 0.5 * angle;
+    for (int side : { -1, 1 })
+    {
+      const double r = 2.0 + 0.5 * side * std::cos(twist);
+      strip.Points.insert(strip.Points.end(),
+        { r * std::cos(angle), r * std::sin(angle), 0.5 * side * std::sin(twist) });
+    }
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    const int a = 2 * i, b = 2 * i + 1;
+    const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    strip.Triangles.push_back({ a, c, b });
+    strip.Triangles.push_back({ b, c, d });
+  }
+  EXPECT_NE(cvt::RepairSurfaceMesh(strip, report).find("not orientable"), std::string::npos);
+
+  // Bad values.
+  cvt::SurfaceMesh bad = FlatSquare(2, 0.0, 1.0);
+  bad.Points[4] = std::nan("");
+  EXPECT_NE(cvt::CheckSurfaceMesh(bad).find("NaN"), std::string::npos);
+  bad = FlatSquare(2, 0.0, 1.0);
+  bad.Density.assign(bad.NumberOfPoints(), 1.0);
+  bad.Density[3] = -1.0;
+  EXPECT_NE(cvt::CheckSurfaceMesh(bad).find("negative"), std::string::npos);
+  bad.Density.assign(bad.NumberOfPoints(), 0.0);
+  EXPECT_NE(cvt::CheckSurfaceMesh(bad).find("zero everywhere"), std::string::npos);
+}
+
+TEST(SurfaceMesh, TopologyCountsGenusAndLoops)
+{
+  // A torus as a 12 x 8 grid with both borders identified: genus 1.
+  cvt::SurfaceMesh torus;
+  const int nu = 12, nv = 8;
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      const double u = 2 * 3.14159265358979 * i / nu, v = 2 * 3.14159265358979 * j / nv;
+      torus.Points.insert(torus.Points.end(),
+        { (1 + 0.4 * std::cos(v)) * std::cos(u), (1 + 0.4 * std::cos(v)) * std::sin(u),
+          0.4 * std::sin(v) });
+    }
+  }
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      const int a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
+                d = i * nv + (j + 1) % nv;
+      torus.Triangles.push_back({ a, b, c });
+      torus.Triangles.push_back({ a, c, d });
+    }
+  }
+  const cvt::MeshTopology t = cvt::ComputeMeshTopology(torus.NumberOfPoints(), torus.Triangles);
+  EXPECT_EQ(t.Components, 1);
+  EXPECT_EQ(t.Genus, 1);
+  EXPECT_EQ(t.BoundaryLoops, 0);
+  EXPECT_EQ(t.EulerCharacteristic, 0);
+}

@@ -1,0 +1,191 @@
+#!/usr/bin/python3
+"""Writes the surface test meshes into a folder (no downloads: VTK sources and marching cubes
+of implicit surfaces, made here). Each is a kind of input the remesher must handle:
+  sphere.vtp        closed, genus 0 (VTK's UV sphere: pole fans, uneven triangles)
+  torus.vtp         closed, genus 1, as a parametric grid with duplicated seam points
+  genus2.vtp        closed, genus 2 (marching cubes: many thin triangles)
+  genus3.vtp        closed, genus 3
+  dumbbell.vtp      closed, genus 0, not star-shaped about its centroid (two balls, a bar)
+  holes.vtp         a sphere with four holes (four boundary loops)
+  twoparts.vtp      two disjoint closed parts
+  box.vtp           a box with sharp edges, quads triangulated and subdivided
+  dirty.vtp         a disk with duplicated points, zero-area and duplicate triangles
+  disk.vtp          an open disk (one boundary loop)
+Usage: make_test_meshes.py OUTPUT_DIR"""
+import os
+import sys
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import numpy_to_vtk
+
+
+def write(mesh, path):
+    w = vtk.vtkXMLPolyDataWriter()
+    w.SetDataModeToBinary()
+    w.SetInputData(mesh)
+    w.SetFileName(path)
+    w.Write()
+
+
+def output(algorithm):
+    algorithm.Update()
+    out = vtk.vtkPolyData()
+    out.ShallowCopy(algorithm.GetOutput())
+    return out
+
+
+def implicit_surface(function, bounds, n=96):
+    """Marching cubes of function(x, y, z) = 0 over a box, as triangles."""
+    lo, hi = np.array(bounds[0::2]), np.array(bounds[1::2])
+    axes = [np.linspace(lo[k], hi[k], n) for k in range(3)]
+    z, y, x = np.meshgrid(axes[2], axes[1], axes[0], indexing='ij')
+    values = function(x, y, z).astype(np.float64).ravel()
+    image = vtk.vtkImageData()
+    image.SetDimensions(n, n, n)
+    image.SetOrigin(*lo)
+    image.SetSpacing(*((hi - lo) / (n - 1)))
+    array = numpy_to_vtk(values, deep=True)
+    array.SetName('f')
+    image.GetPointData().SetScalars(array)
+    contour = vtk.vtkMarchingCubes()
+    contour.SetInputData(image)
+    contour.SetValue(0, 0.0)
+    contour.ComputeNormalsOff()
+    contour.ComputeScalarsOff()
+    return output(contour)
+
+
+def torus_field(x, y, z, R=1.0, r=0.4):
+    return (np.sqrt(x * x + y * y) - R) ** 2 + z * z - r * r
+
+
+def main():
+    folder = sys.argv[1]
+    os.makedirs(folder, exist_ok=True)
+
+    sphere = vtk.vtkSphereSource()
+    sphere.SetThetaResolution(80)
+    sphere.SetPhiResolution(60)
+    write(output(sphere), os.path.join(folder, 'sphere.vtp'))
+
+    torus = vtk.vtkParametricTorus()
+    torus.SetRingRadius(1.0)
+    torus.SetCrossSectionRadius(0.4)
+    source = vtk.vtkParametricFunctionSource()
+    source.SetParametricFunction(torus)
+    source.SetUResolution(120)
+    source.SetVResolution(60)
+    source.GenerateTextureCoordinatesOff()
+    write(output(source), os.path.join(folder, 'torus.vtp'))
+
+    # Genus 2 and 3: unions of tori along x (the product of the fields is zero on each torus).
+    def tori(count):
+        def f(x, y, z):
+            value = np.ones_like(x)
+            for k in range(count):
+                cx = (k - (count - 1) / 2.0) * 1.6
+                value = np.minimum(value, torus_field(x - cx, y, z, 1.0, 0.35))
+            return value
+        return f
+    write(implicit_surface(tori(2), (-2.8, 2.8, -1.6, 1.6, -0.6, 0.6), 110),
+          os.path.join(folder, 'genus2.vtp'))
+    write(implicit_surface(tori(3), (-3.6, 3.6, -1.6, 1.6, -0.6, 0.6), 120),
+          os.path.join(folder, 'genus3.vtp'))
+
+    def dumbbell(x, y, z):
+        ball = np.minimum(np.sqrt((x - 1.2) ** 2 + y * y + z * z), np.sqrt((x + 1.2) ** 2 + y * y + z * z)) - 0.7
+        bar = np.maximum(np.sqrt(y * y + z * z) - 0.25, np.abs(x) - 1.2)
+        return np.minimum(ball, bar)
+    write(implicit_surface(dumbbell, (-2.1, 2.1, -0.9, 0.9, -0.9, 0.9), 100),
+          os.path.join(folder, 'dumbbell.vtp'))
+
+    # A sphere with four round holes.
+    fine = vtk.vtkSphereSource()
+    fine.SetThetaResolution(90)
+    fine.SetPhiResolution(70)
+    ball = output(fine)
+    centres = vtk.vtkCellCenters()
+    centres.SetInputData(ball)
+    centres.Update()
+    keep = vtk.vtkCellArray()
+    directions = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, 0, 1)]
+    for c in range(ball.GetNumberOfCells()):
+        p = np.array(centres.GetOutput().GetPoint(c))
+        p /= np.linalg.norm(p)
+        if all(np.dot(p, d) < 0.93 for d in directions):
+            keep.InsertNextCell(ball.GetCell(c).GetPointIds())
+    holes = vtk.vtkPolyData()
+    holes.SetPoints(ball.GetPoints())
+    holes.SetPolys(keep)
+    clean = vtk.vtkCleanPolyData()
+    clean.SetInputData(holes)
+    write(output(clean), os.path.join(folder, 'holes.vtp'))
+
+    # Two parts.
+    a = vtk.vtkSphereSource()
+    a.SetThetaResolution(60)
+    a.SetPhiResolution(40)
+    b = vtk.vtkSphereSource()
+    b.SetCenter(1.5, 0.0, 0.0)
+    b.SetRadius(0.35)
+    b.SetThetaResolution(40)
+    b.SetPhiResolution(30)
+    both = vtk.vtkAppendPolyData()
+    both.AddInputConnection(a.GetOutputPort())
+    both.AddInputConnection(b.GetOutputPort())
+    write(output(both), os.path.join(folder, 'twoparts.vtp'))
+
+    # A box: quads (with points repeated per face), triangulated and subdivided.
+    cube = vtk.vtkCubeSource()
+    cube.SetXLength(2.0)
+    cube.SetYLength(1.0)
+    cube.SetZLength(0.6)
+    merge = vtk.vtkCleanPolyData()
+    merge.SetInputConnection(cube.GetOutputPort())
+    tri = vtk.vtkTriangleFilter()
+    tri.SetInputConnection(merge.GetOutputPort())
+    sub = vtk.vtkLinearSubdivisionFilter()
+    sub.SetInputConnection(tri.GetOutputPort())
+    sub.SetNumberOfSubdivisions(5)
+    box = output(sub)
+    box.GetPointData().Initialize()
+    write(box, os.path.join(folder, 'box.vtp'))
+
+    # An open disk, and a dirty copy of it.
+    disk = vtk.vtkDiskSource()
+    disk.SetInnerRadius(0.0)
+    disk.SetOuterRadius(1.0)
+    disk.SetRadialResolution(30)
+    disk.SetCircumferentialResolution(120)
+    dtri = vtk.vtkTriangleFilter()
+    dtri.SetInputConnection(disk.GetOutputPort())
+    clean_disk = vtk.vtkCleanPolyData()
+    clean_disk.SetInputConnection(dtri.GetOutputPort())
+    flat = output(clean_disk)
+    write(flat, os.path.join(folder, 'disk.vtp'))
+    # Dirty: every triangle with its own points, one duplicate and two zero-area triangles.
+    points = vtk.vtkPoints()
+    polys = vtk.vtkCellArray()
+    for c in range(flat.GetNumberOfCells()):
+        ids = flat.GetCell(c).GetPointIds()
+        polys.InsertNextCell(3)
+        for k in range(3):
+            polys.InsertCellPoint(points.InsertNextPoint(flat.GetPoint(ids.GetId(k))))
+    ids = flat.GetCell(0).GetPointIds()
+    polys.InsertNextCell(3)
+    for k in range(3):
+        polys.InsertCellPoint(points.InsertNextPoint(flat.GetPoint(ids.GetId(k))))
+    for c in range(2):
+        polys.InsertNextCell(3)
+        p = points.InsertNextPoint(flat.GetPoint(c))
+        polys.InsertCellPoint(p)
+        polys.InsertCellPoint(p)
+        polys.InsertCellPoint(points.InsertNextPoint(flat.GetPoint(c + 1)))
+    dirty = vtk.vtkPolyData()
+    dirty.SetPoints(points)
+    dirty.SetPolys(polys)
+    write(dirty, os.path.join(folder, 'dirty.vtp'))
+
+
+main()
