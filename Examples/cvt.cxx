@@ -87,7 +87,7 @@ Sites:
   --seed S                seed of the initial site sampling (default 1)
 Optimiser:
   --method lloyd|lbfgs    optimiser (default lbfgs)
-  --iterations N          iteration cap (default 100)
+  --iterations N          iteration cap (default 100; 60 for cvt surface --input)
   --tolerance T           stop when the relative energy decrease falls below T (Lloyd: or
                           when no pixel changes site); 0 runs every iteration (default 1e-6)
   --gradient-tolerance G  stop when |grad F| falls below G times its initial value (default 0)
@@ -115,6 +115,7 @@ struct Options
   int GIResolution[2] = { 1024, 512 };
   bool HaveTorus = false, HaveImageOption = false;
   std::string Engine = "auto";
+  bool HaveIterations = false;
   long long Seed = 1;
   double Tolerance = 1e-6;
 };
@@ -264,7 +265,10 @@ Options ParseArguments(int argc, char* argv[])
     else if (a == "--method")
       options.Method = value();
     else if (a == "--iterations")
+    {
       options.Iterations = static_cast<int>(ParseInteger(a, value()));
+      options.HaveIterations = true;
+    }
     else if (a == "--tolerance")
       options.Tolerance = ParseNumber(a, value());
     else if (a == "--output")
@@ -770,7 +774,12 @@ int RunRemesh(const Options& options)
   vtkNew<vtkCVTRemeshFilter> cvt;
   cvt->SetInputConnection(reader->GetOutputPort());
   cvt->SetDensityArray(options.Array.c_str());
+  const int iterations = cvt->GetMaximumNumberOfIterations();
   SetOptimizer(options, cvt.Get());
+  if (!options.HaveIterations)
+  {
+    cvt->SetMaximumNumberOfIterations(iterations); // the filter's default suits meshes
+  }
   const Clock::time_point optimise = Clock::now();
   Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetSitesOutput(); });
   const double cvtSeconds = seconds(optimise);

@@ -217,8 +217,8 @@ int vtkCVTRemeshFilter::RequestData(
     cvt::ComputeMeshTopology(mesh.NumberOfPoints(), mesh.Triangles);
 
   // --- Sites and the optimiser on the exact CPU engine.
-  const std::vector<double> initial =
-    cvt::SampleMeshSites(mesh, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed));
+  const std::vector<double> initial = cvt::SampleMeshSites(
+    mesh, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed), &inputTopology);
   cvt::RestrictedVoronoi engine;
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
@@ -243,29 +243,19 @@ int vtkCVTRemeshFilter::RequestData(
     return 0;
   }
 
-  // --- The dual, the sites on the surface, and their energy.
+  // --- The dual: the remesh's vertices are the sites' nearest surface points. The sites
+  // themselves stay where the CVT put them (slightly inside curved surfaces: the centroids of
+  // their restricted cells), which is what the energy is minimal for.
   cvt::RestrictedDual dual;
-  cvt::CellSums sums;
-  std::vector<double> sites = result.Sites;
   if (!engine.ComputeDual(dual))
   {
     vtkErrorMacro("The restricted Delaunay triangulation failed: " << engine.GetLastError() << ".");
     return 0;
   }
-  for (size_t i = 0; i < dual.SurfaceTriangles.size(); ++i)
-  {
-    if (dual.SurfaceTriangles[i] >= 0)
-    {
-      std::copy(&dual.SurfacePoints[3 * i], &dual.SurfacePoints[3 * i] + 3, &sites[3 * i]);
-    }
-  }
   FillLabels(labelsOut, triangles, mesh, engine.GetPointLabels());
-  if (!engine.SetSites(sites) || !engine.ComputeCellSums(sums))
-  {
-    vtkErrorMacro("The surface CVT failed: " << engine.GetLastError() << ".");
-    return 0;
-  }
-  const cvt::Remesh remesh = cvt::BuildRemesh(dual);
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, inputTopology.Loops.size());
+  const cvt::CellSums& sums = result.Sums;
+  const std::vector<double>& sites = result.Sites;
 
   // --- Outputs.
   cvtvtk::FillSites(sitesOut, sites, 3, 0.0, sums);

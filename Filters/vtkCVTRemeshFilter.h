@@ -14,7 +14,8 @@
  * each triangle clipped by the sites' bisector planes, multi-threaded with vtkSMPTools).
  *
  * Outputs:
- * 0. sites: the final sites on the surface (vtkPolyData vertices), SiteId, Mass, Energy; field
+ * 0. sites: the final sites (vtkPolyData vertices: the centroids of their restricted cells, so
+ *    slightly inside curved surfaces), SiteId, Mass, Energy; field
  *    data Energy, GradientNorm, Iterations, Evaluations, StopReason, SurfaceArea, Engine and
  *    EngineReason, and the input's topology;
  * 1. labels: the cleaned input with an int point array SiteId (the nearest site);
@@ -91,7 +92,7 @@ protected:
   int NumberOfSites = 1000;
   int RandomSeed = 1;
   int Method = LBFGS;
-  int MaximumNumberOfIterations = 200;
+  int MaximumNumberOfIterations = 60;
   double Tolerance = 1e-7;
   double GradientTolerance = 0.0;
   int NumberOfCorrections = 7;

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <map>
 #include <unordered_map>
 
 namespace cvt
@@ -18,7 +17,7 @@ std::uint64_t DirectedKey(int a, int b)
 }
 }
 
-Remesh BuildRemesh(const RestrictedDual& dual, int maximumHole)
+Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
 {
   Remesh remesh;
   // Keep triangles whose directed edges are all new: a second triangle on an edge in the same
@@ -46,45 +45,39 @@ Remesh BuildRemesh(const RestrictedDual& dual, int maximumHole)
   }
   // Holes: loops of edges with no twin. A loop along the input's border is part of the
   // surface; a short loop elsewhere is where cells met in a degenerate point: close it.
-  std::map<int, int> next;
+  std::vector<std::pair<int, int>> border;
   for (const auto& t : kept)
   {
     for (int e = 0; e < 3; ++e)
     {
       if (directed.count(DirectedKey(t[(e + 1) % 3], t[e])) == 0)
       {
-        next[t[(e + 1) % 3]] = t[e]; // the hole is traversed against the triangles' edges
+        border.emplace_back(t[(e + 1) % 3], t[e]); // against the triangles: the hole's way
       }
     }
   }
-  std::map<int, char> visited;
-  for (const auto& start : next)
+  std::vector<std::vector<int>> holes, borderLoops;
+  for (auto& loop : TraceLoops(border))
   {
-    if (visited[start.first])
+    if (loop.size() < 3)
     {
       continue;
     }
-    std::vector<int> loop;
-    bool closed = false;
-    for (int p = start.first;;)
-    {
-      if (visited[p])
-      {
-        closed = p == start.first;
-        break;
-      }
-      visited[p] = 1;
-      loop.push_back(p);
-      auto found = next.find(p);
-      if (found == next.end())
-      {
-        break;
-      }
-      p = found->second;
-    }
     const bool onBorder = std::all_of(
       loop.begin(), loop.end(), [&dual](int site) { return dual.OnBoundary[site] != 0; });
-    if (!closed || onBorder || loop.size() < 3 || static_cast<int>(loop.size()) > maximumHole)
+    (onBorder ? borderLoops : holes).push_back(std::move(loop));
+  }
+  // Loops of border cells beyond the input's own loops are notches where a border cell met its
+  // neighbours outside the surface: the shortest ones are closed.
+  std::sort(borderLoops.begin(), borderLoops.end(),
+    [](const std::vector<int>& a, const std::vector<int>& b) { return a.size() < b.size(); });
+  for (size_t extra = 0; extra + inputBoundaryLoops < borderLoops.size(); ++extra)
+  {
+    holes.push_back(borderLoops[extra]);
+  }
+  for (const auto& loop : holes)
+  {
+    if (static_cast<int>(loop.size()) > maximumHole)
     {
       continue;
     }

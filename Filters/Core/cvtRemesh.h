@@ -26,9 +26,11 @@ struct Remesh
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
 /// points (boundary points for cells on the border), triangles the restricted Delaunay ones;
-/// triangles that would make an edge non-manifold are dropped, and holes whose vertices are not
-/// all on the input's border (at most `maximumHole` edges) are closed.
-CVTCORE_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, int maximumHole = 8);
+/// triangles that would make an edge non-manifold are dropped, and holes of at most
+/// `maximumHole` edges are closed: those with a vertex off the input's border, and the shortest
+/// loops of border cells beyond the input's number of boundary loops.
+CVTCORE_EXPORT Remesh BuildRemesh(
+  const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole = 8);
 
 } // namespace cvt
 

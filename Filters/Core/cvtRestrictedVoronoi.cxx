@@ -80,8 +80,11 @@ struct SiteContact
   double Distance2; // from the site to the nearest point of its part of the triangle
   double Point[3];
   int BoundaryRank;         // 0: none, 1: boundary edge point, 2: boundary corner
-  double BoundaryDistance2; // from the site to BoundaryPoint
+  double BoundaryDistance2; // corners: from the site to BoundaryPoint
   double BoundaryPoint[3];
+  // The parts of the mesh border in this piece of the cell (at most one per triangle edge).
+  int SegmentCount;
+  double Segments[3][6];
 };
 
 constexpr int NeighborCount = 20;
@@ -102,6 +105,10 @@ struct RestrictedVoronoi::Internals
   std::vector<std::uint32_t> Neighbors; // K per site, nearest first
   std::vector<double> NeighborDistance2;
 
+  /// Per triangle: density-weighted mass, centroid and integral of rho |x - centroid|^2, so a
+  /// triangle inside one cell costs a few operations: E = J + m |g - s|^2.
+  std::vector<Piece> TriangleMoments;
+
   std::vector<int> PointLabels;
   int BlockCount = 1;
   std::vector<std::vector<Piece>> BlockPieces;
@@ -115,7 +122,8 @@ struct RestrictedVoronoi::Internals
     std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const;
   bool ClipToCell(int t, int site, Polygon& polygon, std::vector<std::uint32_t>& scratchIds,
     std::vector<double>& scratchD2) const;
-  void Integrate(int t, int site, const Polygon& polygon, Piece& piece) const;
+  void Integrate(int t, const double* s, const Polygon& polygon, Piece& piece) const;
+  void WholeTriangle(int t, Polygon& polygon) const;
   void Barycentric(int t, const double* p, double* lambda) const;
   void Contact(int t, int site, const Polygon& polygon, SiteContact& contact) const;
 };
@@ -141,12 +149,7 @@ void RestrictedVoronoi::Internals::Barycentric(int t, const double* p, double* l
 }
 
 //------------------------------------------------------------------------------
-// Clips triangle t to the Voronoi cell of `site`: by the bisectors of its neighbours, nearest
-// first, until no further neighbour can reach the polygon (security radius). Mesh-edge points
-// are computed from the edge's end points in a fixed order, so the two triangles of an edge
-// agree on them exactly. Returns false when the polygon is empty.
-bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
-  std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const
+void RestrictedVoronoi::Internals::WholeTriangle(int t, Polygon& polygon) const
 {
   const auto& tri = this->Mesh.Triangles[t];
   polygon.Size = 3;
@@ -156,6 +159,18 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
     polygon.V[k].Label = -1 - k;
     polygon.V[k].Origin = k;
   }
+}
+
+//------------------------------------------------------------------------------
+// Clips triangle t to the Voronoi cell of `site`: by the bisectors of its neighbours, nearest
+// first, until no further neighbour can reach the polygon (security radius). Mesh-edge points
+// are computed from the edge's end points in a fixed order, so the two triangles of an edge
+// agree on them exactly. Returns false when the polygon is empty.
+bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
+  std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const
+{
+  const auto& tri = this->Mesh.Triangles[t];
+  this->WholeTriangle(t, polygon);
   const double* s = &this->Sites[3 * static_cast<size_t>(site)];
   const size_t siteCount = this->Sites.size() / 3;
   const std::uint32_t* ids = &this->Neighbors[static_cast<size_t>(site) * this->K];
@@ -163,6 +178,7 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
   size_t available = static_cast<size_t>(this->K);
   Polygon clipped;
   double dist[MaximumPolygonSize];
+  double radius2 = -1.0; // of the polygon about the site; < 0: to be computed
   for (size_t n = 0;; ++n)
   {
     if (n == available)
@@ -195,10 +211,13 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
       }
       available = keep;
     }
-    double radius2 = 0.0;
-    for (int v = 0; v < polygon.Size; ++v)
+    if (radius2 < 0.0)
     {
-      radius2 = std::max(radius2, Distance2(polygon.V[v].P, s));
+      radius2 = 0.0;
+      for (int v = 0; v < polygon.Size; ++v)
+      {
+        radius2 = std::max(radius2, Distance2(polygon.V[v].P, s));
+      }
     }
     if (4.0 * radius2 < d2[n])
     {
@@ -208,6 +227,16 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
     const double* q = &this->Sites[3 * static_cast<size_t>(j)];
     const double normal[3] = { q[0] - s[0], q[1] - s[1], q[2] - s[2] };
     const double offset = 0.5 * Dot(normal, normal);
+    if (offset == 0.0)
+    {
+      // Coincident sites: the lower index takes the cell, the other gets nothing.
+      if (j < site)
+      {
+        polygon.Size = 0;
+        return false;
+      }
+      continue;
+    }
     const auto side = [&](const double* p)
     {
       const double w[3] = { p[0] - s[0], p[1] - s[1], p[2] - s[2] };
@@ -272,6 +301,7 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
       }
     }
     std::swap(polygon, clipped);
+    radius2 = -1.0;
     if (polygon.Size < 3)
     {
       polygon.Size = 0;
@@ -286,10 +316,8 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
 // with rho linear over the mesh triangle: integral of l_a l_b l_c over a triangle of area A is
 // A/10, A/30 or A/60 for three, two or no equal indices.
 void RestrictedVoronoi::Internals::Integrate(
-  int t, int site, const Polygon& polygon, Piece& piece) const
+  int t, const double* s, const Polygon& polygon, Piece& piece) const
 {
-  const double* s = &this->Sites[3 * static_cast<size_t>(site)];
-  piece.Site = site;
   piece.Mass = piece.Energy = 0.0;
   piece.Moment[0] = piece.Moment[1] = piece.Moment[2] = 0.0;
   const bool uniform = this->Mesh.Density.empty();
@@ -367,6 +395,7 @@ void RestrictedVoronoi::Internals::Contact(
   contact.Triangle = t;
   contact.BoundaryRank = 0;
   contact.BoundaryDistance2 = std::numeric_limits<double>::infinity();
+  contact.SegmentCount = 0;
   // The projection onto the plane, when it falls inside the (convex) polygon.
   const double height = (s[0] - polygon.V[0].P[0]) * n[0] + (s[1] - polygon.V[0].P[1]) * n[1] +
     (s[2] - polygon.V[0].P[2]) * n[2];
@@ -417,12 +446,12 @@ void RestrictedVoronoi::Internals::Contact(
         std::copy(a.P, a.P + 3, contact.BoundaryPoint);
       }
     }
-    if (a.Label < 0 && this->OnMeshBoundary[t][-1 - a.Label] && contact.BoundaryRank < 2 &&
-      d2 < contact.BoundaryDistance2)
+    if (a.Label < 0 && this->OnMeshBoundary[t][-1 - a.Label] && contact.SegmentCount < 3)
     {
-      contact.BoundaryRank = 1;
-      contact.BoundaryDistance2 = d2;
-      std::copy(p, p + 3, contact.BoundaryPoint);
+      contact.BoundaryRank = std::max(contact.BoundaryRank, 1);
+      double* segment = contact.Segments[contact.SegmentCount++];
+      std::copy(a.P, a.P + 3, segment);
+      std::copy(b.P, b.P + 3, segment + 3);
     }
   }
 }
@@ -440,17 +469,20 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
   if (l0 == l1 && l1 == l2)
   {
     // Voronoi cells are convex: a triangle whose corners share a site lies in its cell.
-    polygon.Size = 3;
+    const Piece& whole = this->TriangleMoments[t];
+    const double* s = &this->Sites[3 * static_cast<size_t>(l0)];
+    const double d[3] = { whole.Moment[0] - s[0], whole.Moment[1] - s[1], whole.Moment[2] - s[2] };
+    piece.Site = l0;
+    piece.Mass = whole.Mass;
     for (int k = 0; k < 3; ++k)
     {
-      std::copy(this->Mesh.Point(tri[k]), this->Mesh.Point(tri[k]) + 3, polygon.V[k].P);
-      polygon.V[k].Label = -1 - k;
-      polygon.V[k].Origin = k;
+      piece.Moment[k] = whole.Mass * d[k];
     }
-    this->Integrate(t, l0, polygon, piece);
+    piece.Energy = whole.Energy + whole.Mass * Dot(d, d);
     pieces.push_back(piece);
     if (dual)
     {
+      this->WholeTriangle(t, polygon);
       contacts.emplace_back();
       this->Contact(t, l0, polygon, contacts.back());
     }
@@ -473,7 +505,8 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
     {
       continue;
     }
-    this->Integrate(t, site, polygon, piece);
+    this->Integrate(t, &this->Sites[3 * static_cast<size_t>(site)], polygon, piece);
+    piece.Site = site;
     pieces.push_back(piece);
     for (int v = 0; v < polygon.Size; ++v)
     {
@@ -674,6 +707,28 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
   d.BlockTriples.assign(d.BlockCount, {});
   d.BlockContacts.assign(d.BlockCount, {});
   d.PointLabels.assign(mesh.NumberOfPoints(), -1);
+  d.TriangleMoments.resize(triangleCount);
+  vtkSMPTools::For(0, triangleCount, 4096,
+    [&d](int begin, int end)
+    {
+      Polygon polygon;
+      for (int t = begin; t < end; ++t)
+      {
+        d.WholeTriangle(t, polygon);
+        Piece about;
+        d.Integrate(t, polygon.V[0].P, polygon, about);
+        Piece& whole = d.TriangleMoments[t];
+        whole.Mass = about.Mass;
+        for (int k = 0; k < 3; ++k)
+        {
+          // Stored in Moment: the centroid.
+          whole.Moment[k] =
+            polygon.V[0].P[k] + (about.Mass > 0.0 ? about.Moment[k] / about.Mass : 0.0);
+        }
+        d.Integrate(t, whole.Moment, polygon, about);
+        whole.Energy = about.Energy;
+      }
+    });
   return true;
 }
 
@@ -792,6 +847,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   std::vector<double> nearest2(siteCount, std::numeric_limits<double>::infinity());
   std::vector<int> boundaryRank(siteCount, 0);
   std::vector<double> boundary2(siteCount, std::numeric_limits<double>::infinity());
+  std::vector<double> borderLength(siteCount, 0.0), borderMoment(3 * siteCount, 0.0);
   for (const auto& block : d.BlockContacts)
   {
     for (const SiteContact& c : block)
@@ -803,14 +859,54 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         std::copy(c.Point, c.Point + 3, &dual.SurfacePoints[3 * i]);
         dual.SurfaceTriangles[i] = c.Triangle;
       }
-      if (c.BoundaryRank > boundaryRank[i] ||
-        (c.BoundaryRank > 0 && c.BoundaryRank == boundaryRank[i] &&
-          c.BoundaryDistance2 < boundary2[i]))
+      if (c.BoundaryRank == 2 && (boundaryRank[i] < 2 || c.BoundaryDistance2 < boundary2[i]))
       {
-        boundaryRank[i] = c.BoundaryRank;
         boundary2[i] = c.BoundaryDistance2;
         std::copy(c.BoundaryPoint, c.BoundaryPoint + 3, &dual.BoundaryPoints[3 * i]);
         dual.BoundaryTriangles[i] = c.Triangle;
+      }
+      boundaryRank[i] = std::max(boundaryRank[i], c.BoundaryRank);
+      for (int s = 0; s < c.SegmentCount; ++s)
+      {
+        const double* segment = c.Segments[s];
+        const double length = std::sqrt(Distance2(segment, segment + 3));
+        borderLength[i] += length;
+        for (int k = 0; k < 3; ++k)
+        {
+          borderMoment[3 * i + k] += 0.5 * length * (segment[k] + segment[3 + k]);
+        }
+      }
+    }
+  }
+  // Cells on the border without a corner: pinned to the border point nearest to the centroid
+  // of their part of the border (the 1D centroid), which spaces the remesh's border evenly.
+  std::fill(boundary2.begin(), boundary2.end(), std::numeric_limits<double>::infinity());
+  for (const auto& block : d.BlockContacts)
+  {
+    for (const SiteContact& c : block)
+    {
+      const size_t i = static_cast<size_t>(c.Site);
+      if (boundaryRank[i] != 1 || !(borderLength[i] > 0.0))
+      {
+        continue;
+      }
+      const double target[3] = { borderMoment[3 * i] / borderLength[i],
+        borderMoment[3 * i + 1] / borderLength[i], borderMoment[3 * i + 2] / borderLength[i] };
+      for (int s = 0; s < c.SegmentCount; ++s)
+      {
+        const double* a = c.Segments[s];
+        const double e[3] = { a[3] - a[0], a[4] - a[1], a[5] - a[2] };
+        const double w[3] = { target[0] - a[0], target[1] - a[1], target[2] - a[2] };
+        const double length2 = Dot(e, e);
+        const double u = length2 > 0.0 ? std::clamp(Dot(w, e) / length2, 0.0, 1.0) : 0.0;
+        const double q[3] = { a[0] + u * e[0], a[1] + u * e[1], a[2] + u * e[2] };
+        const double d2 = Distance2(q, target);
+        if (d2 < boundary2[i])
+        {
+          boundary2[i] = d2;
+          std::copy(q, q + 3, &dual.BoundaryPoints[3 * i]);
+          dual.BoundaryTriangles[i] = c.Triangle;
+        }
       }
     }
   }

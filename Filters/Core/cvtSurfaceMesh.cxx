@@ -159,8 +159,8 @@ double SignedVolume(const SurfaceMesh& mesh, const std::vector<int>& triangles)
 
 bool MeshRepairReport::Changed() const
 {
-  return this->DegenerateTriangles + this->DuplicateTriangles + this->SplitPoints +
-    this->FlippedTriangles + this->UnusedPoints >
+  return this->DegenerateTriangles + this->DuplicateTriangles + this->SplitEdges +
+    this->SplitPoints + this->FlippedTriangles + this->UnusedPoints >
     0;
 }
 
@@ -178,6 +178,7 @@ std::string MeshRepairReport::Summary() const
   };
   item(this->DegenerateTriangles, "dropped degenerate triangles:");
   item(this->DuplicateTriangles, "dropped duplicate triangles:");
+  item(this->SplitEdges, "split non-manifold edges:");
   item(this->SplitPoints, "split non-manifold points:");
   item(this->FlippedTriangles, "reoriented triangles:");
   item(this->UnusedPoints, "dropped unused points:");
@@ -255,28 +256,82 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   {
     return "the mesh has no triangle of positive area";
   }
-  // Non-manifold edges cannot be repaired without guessing which sheets belong together.
+  // Non-manifold edges: the first triangle on the edge keeps it with the first one that agrees
+  // with its orientation (else the second); the others get their own copies of its two points.
   EdgeMap edges = MapEdges(mesh.Triangles);
   {
-    int nonManifold = 0;
-    std::uint64_t example = 0;
+    std::vector<std::uint64_t> crowded;
     for (const auto& edge : edges)
     {
       if (edge.second.size() > 2)
       {
-        if (nonManifold++ == 0)
-        {
-          example = edge.first;
-        }
+        crowded.push_back(edge.first);
       }
     }
-    if (nonManifold > 0)
+    std::sort(crowded.begin(), crowded.end());
+    for (std::uint64_t key : crowded)
     {
-      const int a = static_cast<int>(example >> 32), b = static_cast<int>(example & 0xffffffffu);
-      return std::to_string(nonManifold) +
-        " non-manifold edges (shared by more than two triangles), e.g. between points " +
-        Where(mesh, a) + " and " + Where(mesh, b) +
-        "; remove the extra sheets or split the mesh into manifold parts";
+      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+      std::vector<int> on; // the triangles that still have this edge
+      for (const auto& use : edges[key])
+      {
+        const auto& t = mesh.Triangles[use.first];
+        if (std::count(t.begin(), t.end(), a) && std::count(t.begin(), t.end(), b))
+        {
+          on.push_back(use.first);
+        }
+      }
+      if (on.size() <= 2)
+      {
+        continue;
+      }
+      const auto forward = [&](int t)
+      {
+        const auto& tri = mesh.Triangles[t];
+        for (int k = 0; k < 3; ++k)
+        {
+          if (tri[k] == a && tri[(k + 1) % 3] == b)
+          {
+            return true;
+          }
+        }
+        return false;
+      };
+      size_t partner = 1;
+      for (size_t k = 1; k < on.size(); ++k)
+      {
+        if (forward(on[k]) != forward(on[0]))
+        {
+          partner = k;
+          break;
+        }
+      }
+      for (size_t k = 1; k < on.size(); ++k)
+      {
+        if (k == partner)
+        {
+          continue;
+        }
+        for (int& p : mesh.Triangles[on[k]])
+        {
+          if (p == a || p == b)
+          {
+            const int copy = mesh.NumberOfPoints();
+            mesh.Points.insert(mesh.Points.end(), mesh.Point(p), mesh.Point(p) + 3);
+            if (!mesh.Density.empty())
+            {
+              mesh.Density.push_back(mesh.Density[p]);
+            }
+            mesh.SourceIds.push_back(mesh.SourceIds[p]);
+            p = copy;
+          }
+        }
+      }
+      ++report.SplitEdges;
+    }
+    if (report.SplitEdges > 0)
+    {
+      edges = MapEdges(mesh.Triangles);
     }
   }
   // Consistent orientation, component by component (breadth-first over edges).
@@ -402,6 +457,67 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   return std::string();
 }
 
+std::vector<std::vector<int>> TraceLoops(const std::vector<std::pair<int, int>>& edges)
+{
+  std::unordered_map<int, std::vector<int>> outgoing;
+  for (const auto& edge : edges)
+  {
+    outgoing[edge.first].push_back(edge.second);
+  }
+  std::vector<std::vector<int>> loops;
+  for (const auto& edge : edges)
+  {
+    std::vector<int>& firstOut = outgoing[edge.first];
+    auto unused = std::find(firstOut.begin(), firstOut.end(), edge.second);
+    if (unused == firstOut.end())
+    {
+      continue; // already on a loop
+    }
+    std::vector<int> path{ edge.first };
+    std::unordered_map<int, size_t> position{ { edge.first, 0 } };
+    int at = edge.first;
+    while (true)
+    {
+      std::vector<int>& out = outgoing[at];
+      if (out.empty())
+      {
+        break; // an open chain: not a loop
+      }
+      // Prefer the edge this search started with, so loops come out in a stable order.
+      auto take = at == edge.first && std::find(out.begin(), out.end(), edge.second) != out.end()
+        ? std::find(out.begin(), out.end(), edge.second)
+        : out.begin();
+      const int next = *take;
+      out.erase(take);
+      auto seen = position.find(next);
+      if (seen != position.end())
+      {
+        // Back at a point of the path: the part from there is a loop of its own.
+        loops.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(seen->second), path.end());
+        for (size_t k = seen->second + 1; k < path.size(); ++k)
+        {
+          position.erase(path[k]);
+        }
+        path.resize(seen->second + 1);
+        at = next;
+        if (path.size() == 1 && outgoing[at].empty())
+        {
+          break;
+        }
+        if (path.size() == 1 && next == edge.first)
+        {
+          break;
+        }
+        continue;
+      }
+      position[next] = path.size();
+      path.push_back(next);
+      at = next;
+    }
+  }
+  return loops;
+}
+
 MeshTopology ComputeMeshTopology(
   int numberOfPoints, const std::vector<std::array<int, 3>>& triangles)
 {
@@ -417,16 +533,17 @@ MeshTopology ComputeMeshTopology(
       parts.Join(t[k], t[(k + 1) % 3]);
     }
   }
-  // Boundary edges, directed as in their triangle; each boundary point starts one of them.
-  std::unordered_map<int, int> nextOnBoundary;
+  // Boundary edges, directed as in their triangle.
+  std::vector<std::pair<int, int>> border;
   for (const auto& edge : edges)
   {
     if (edge.second.size() == 1)
     {
       const auto& [t, e] = edge.second[0];
-      nextOnBoundary[triangles[t][e]] = triangles[t][(e + 1) % 3];
+      border.emplace_back(triangles[t][e], triangles[t][(e + 1) % 3]);
     }
   }
+  std::sort(border.begin(), border.end()); // the hash map's order is not the same everywhere
   std::unordered_map<int, int> verticesOf, edgesOf, facesOf, loopsOf;
   for (int p = 0; p < numberOfPoints; ++p)
   {
@@ -443,41 +560,32 @@ MeshTopology ComputeMeshTopology(
   {
     ++facesOf[parts.Find(t[0])];
   }
-  std::unordered_map<int, char> visited;
-  std::vector<int> starts;
-  for (const auto& link : nextOnBoundary)
+  topology.Loops = TraceLoops(border);
+  for (const auto& loop : topology.Loops)
   {
-    starts.push_back(link.first);
-  }
-  std::sort(starts.begin(), starts.end());
-  for (int start : starts)
-  {
-    if (visited[start])
-    {
-      continue;
-    }
-    std::vector<int> loop;
-    for (int p = start; !visited[p];)
-    {
-      visited[p] = 1;
-      loop.push_back(p);
-      auto next = nextOnBoundary.find(p);
-      if (next == nextOnBoundary.end())
-      {
-        break;
-      }
-      p = next->second;
-    }
-    ++loopsOf[parts.Find(start)];
-    topology.Loops.push_back(std::move(loop));
+    ++loopsOf[parts.Find(loop[0])];
   }
   topology.BoundaryLoops = static_cast<int>(topology.Loops.size());
-  for (const auto& part : verticesOf)
+  // Components numbered by their smallest point.
+  std::unordered_map<int, int> indexOf;
+  topology.PointComponents.assign(numberOfPoints, -1);
+  for (int p = 0; p < numberOfPoints; ++p)
   {
-    const int chi = part.second - edgesOf[part.first] + facesOf[part.first];
+    if (used[p])
+    {
+      auto found = indexOf.emplace(parts.Find(p), static_cast<int>(indexOf.size()));
+      topology.PointComponents[p] = found.first->second;
+    }
+  }
+  topology.Components = static_cast<int>(indexOf.size());
+  topology.ComponentGenus.assign(topology.Components, 0);
+  for (const auto& part : indexOf)
+  {
+    const int chi = verticesOf[part.first] - edgesOf[part.first] + facesOf[part.first];
+    const int genus = std::max(0, (2 - chi - loopsOf[part.first]) / 2);
     topology.EulerCharacteristic += chi;
-    topology.Genus += std::max(0, (2 - chi - loopsOf[part.first]) / 2);
-    ++topology.Components;
+    topology.Genus += genus;
+    topology.ComponentGenus[part.second] = genus;
   }
   return topology;
 }
@@ -492,42 +600,102 @@ double SurfaceArea(const SurfaceMesh& mesh)
   return area;
 }
 
-std::vector<double> SampleMeshSites(const SurfaceMesh& mesh, int count, std::uint64_t seed)
+std::vector<double> SampleMeshSites(
+  const SurfaceMesh& mesh, int count, std::uint64_t seed, const MeshTopology* topology)
 {
-  std::vector<double> cumulative(mesh.Triangles.size());
+  // Sampling weight per triangle, and per component.
+  const int components = topology ? std::max(1, topology->Components) : 1;
+  const auto componentOf = [&](size_t t)
+  { return topology ? std::max(0, topology->PointComponents[mesh.Triangles[t][0]]) : 0; };
+  std::vector<double> weight(mesh.Triangles.size());
+  std::vector<double> componentWeight(components, 0.0);
   double total = 0.0;
   for (size_t t = 0; t < mesh.Triangles.size(); ++t)
   {
     const auto& tri = mesh.Triangles[t];
-    double weight = TriangleArea(mesh, tri);
+    weight[t] = TriangleArea(mesh, tri);
     if (!mesh.Density.empty())
     {
-      weight *= (mesh.Density[tri[0]] + mesh.Density[tri[1]] + mesh.Density[tri[2]]) / 3.0;
+      weight[t] *= (mesh.Density[tri[0]] + mesh.Density[tri[1]] + mesh.Density[tri[2]]) / 3.0;
     }
-    total += weight;
-    cumulative[t] = total;
+    componentWeight[componentOf(t)] += weight[t];
+    total += weight[t];
+  }
+  // Sites per component: the floor its topology needs, the rest by weight.
+  std::vector<int> quota(components, 0);
+  int floors = 0;
+  for (int c = 0; c < components; ++c)
+  {
+    quota[c] = topology
+      ? 4 + (topology->ComponentGenus[c] > 0 ? 4 + 16 * topology->ComponentGenus[c] : 0)
+      : 0;
+    floors += quota[c];
+  }
+  if (floors > count / 2)
+  {
+    std::fill(quota.begin(), quota.end(), 0);
+    floors = 0;
+  }
+  int assigned = 0;
+  for (int c = 0; c < components; ++c)
+  {
+    quota[c] = std::max(quota[c],
+      static_cast<int>(std::floor(count * (total > 0.0 ? componentWeight[c] / total : 0.0))));
+    assigned += quota[c];
+  }
+  // Hand out or take back the difference, largest components first.
+  std::vector<int> order(components);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+    [&](int a, int b) { return componentWeight[a] > componentWeight[b]; });
+  for (size_t k = 0; assigned != count && components > 0; k = (k + 1) % order.size())
+  {
+    const int c = order[k];
+    if (assigned < count)
+    {
+      ++quota[c];
+      ++assigned;
+    }
+    else if (quota[c] > 0)
+    {
+      --quota[c];
+      --assigned;
+    }
+  }
+  // Within each component, triangles by weight, points uniform in the triangle.
+  std::vector<std::vector<size_t>> trianglesOf(components);
+  std::vector<std::vector<double>> cumulative(components);
+  for (size_t t = 0; t < mesh.Triangles.size(); ++t)
+  {
+    const int c = componentOf(t);
+    trianglesOf[c].push_back(t);
+    cumulative[c].push_back((cumulative[c].empty() ? 0.0 : cumulative[c].back()) + weight[t]);
   }
   std::mt19937_64 rng(seed);
   std::vector<double> sites;
   sites.reserve(3 * static_cast<size_t>(count));
-  for (int i = 0; i < count && total > 0.0; ++i)
+  for (int c = 0; c < components; ++c)
   {
-    const size_t t = std::min(cumulative.size() - 1,
-      static_cast<size_t>(
-        std::upper_bound(cumulative.begin(), cumulative.end(), Uniform01(rng) * total) -
-        cumulative.begin()));
-    double u = Uniform01(rng), v = Uniform01(rng);
-    if (u + v > 1.0)
+    for (int i = 0; i < quota[c] && !cumulative[c].empty() && cumulative[c].back() > 0.0; ++i)
     {
-      u = 1.0 - u;
-      v = 1.0 - v;
-    }
-    const double* a = mesh.Point(mesh.Triangles[t][0]);
-    const double* b = mesh.Point(mesh.Triangles[t][1]);
-    const double* c = mesh.Point(mesh.Triangles[t][2]);
-    for (int k = 0; k < 3; ++k)
-    {
-      sites.push_back(a[k] + u * (b[k] - a[k]) + v * (c[k] - a[k]));
+      const size_t k = std::min(cumulative[c].size() - 1,
+        static_cast<size_t>(std::upper_bound(cumulative[c].begin(), cumulative[c].end(),
+                              Uniform01(rng) * cumulative[c].back()) -
+          cumulative[c].begin()));
+      const auto& tri = mesh.Triangles[trianglesOf[c][k]];
+      double u = Uniform01(rng), v = Uniform01(rng);
+      if (u + v > 1.0)
+      {
+        u = 1.0 - u;
+        v = 1.0 - v;
+      }
+      const double* a = mesh.Point(tri[0]);
+      const double* b = mesh.Point(tri[1]);
+      const double* d = mesh.Point(tri[2]);
+      for (int j = 0; j < 3; ++j)
+      {
+        sites.push_back(a[j] + u * (b[j] - a[j]) + v * (d[j] - a[j]));
+      }
     }
   }
   return sites;

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cvt
@@ -33,6 +34,7 @@ struct MeshRepairReport
 {
   int DegenerateTriangles = 0; // zero area or a repeated point: dropped
   int DuplicateTriangles = 0;  // same three points as another: dropped
+  int SplitEdges = 0;          // edges of more than two triangles, the extra ones detached
   int SplitPoints = 0;         // non-manifold points made into one point per fan
   int FlippedTriangles = 0;    // reoriented to agree with their neighbours
   int UnusedPoints = 0;        // points of no triangle: dropped
@@ -42,10 +44,10 @@ struct MeshRepairReport
 };
 
 /// Prepares a mesh for remeshing: drops degenerate and duplicate triangles and unused points,
-/// splits non-manifold points (one copy per fan of triangles), orients every connected
-/// component consistently (closed ones outwards). Returns "" or what makes the mesh unusable:
-/// non-manifold edges (more than two triangles; with how many and where), a non-orientable
-/// component, no triangle left.
+/// splits non-manifold edges (the triangles beyond an agreeing pair get their own copies of the
+/// edge's points) and points (one copy per fan of triangles), orients every connected component
+/// consistently (closed ones outwards). Returns "" or what makes the mesh unusable: a
+/// non-orientable component (with where), no triangle left.
 CVTCORE_EXPORT std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report);
 
 /// Checks coordinates and density: "" or what is wrong (NaN or infinite coordinates, NaN,
@@ -60,7 +62,14 @@ struct MeshTopology
   int Genus = 0; // summed over the components: (2 - chi_c - loops_c) / 2
   /// Each boundary loop as its points in order (the surface on the left, as the triangles).
   std::vector<std::vector<int>> Loops;
+  std::vector<int> PointComponents; // the component of each point (-1: in no triangle)
+  std::vector<int> ComponentGenus;  // per component
 };
+
+/// Splits directed edges (a, b) that form closed chains into simple loops of points: at a point
+/// where chains meet (a pinch), each loop is cut off when the path comes back to it.
+CVTCORE_EXPORT std::vector<std::vector<int>> TraceLoops(
+  const std::vector<std::pair<int, int>>& edges);
 
 /// Topology of an edge-manifold, consistently oriented mesh (after RepairSurfaceMesh).
 CVTCORE_EXPORT MeshTopology ComputeMeshTopology(
@@ -70,8 +79,10 @@ CVTCORE_EXPORT MeshTopology ComputeMeshTopology(
 CVTCORE_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
 
 /// `count` points on the surface, drawn with probability proportional to area times density.
+/// With the mesh's topology, every component first gets the few sites its topology needs in a
+/// remesh (4 for genus 0, 8 + 16 g for genus g), when `count` allows, so small parts survive.
 CVTCORE_EXPORT std::vector<double> SampleMeshSites(
-  const SurfaceMesh& mesh, int count, std::uint64_t seed);
+  const SurfaceMesh& mesh, int count, std::uint64_t seed, const MeshTopology* topology = nullptr);
 
 } // namespace cvt
 

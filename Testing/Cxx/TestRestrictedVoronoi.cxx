@@ -297,7 +297,7 @@ TEST(RestrictedVoronoi, OptimisedSphereRemeshIsAClosedOrientedSphere)
   EXPECT_LT(result.Sums.TotalEnergy() * 300 / (area * area), 0.165);
   cvt::RestrictedDual dual;
   ASSERT_TRUE(engine.ComputeDual(dual));
-  const cvt::Remesh remesh = cvt::BuildRemesh(dual);
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 0);
   const cvt::MeshTopology topology =
     cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
   EXPECT_EQ(topology.Components, 1);
@@ -337,7 +337,7 @@ TEST(RestrictedVoronoi, OpenSquareRemeshKeepsItsBorder)
     cvt::RunMeshLloyd(engine, cvt::SampleMeshSites(mesh, 100, 2), options, nullptr, result, error));
   cvt::RestrictedDual dual;
   ASSERT_TRUE(engine.ComputeDual(dual));
-  const cvt::Remesh remesh = cvt::BuildRemesh(dual);
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1);
   const cvt::MeshTopology topology =
     cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
   EXPECT_EQ(topology.Components, 1);
@@ -382,11 +382,17 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
   EXPECT_EQ(report.SplitPoints, 1);
   EXPECT_EQ(cvt::ComputeMeshTopology(bowtie.NumberOfPoints(), bowtie.Triangles).Components, 2);
 
-  // Three triangles on one edge.
+  // Three triangles on one edge: the third (the fin) is detached from it.
   cvt::SurfaceMesh fin;
   fin.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1 };
   fin.Triangles = { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } };
-  EXPECT_NE(cvt::RepairSurfaceMesh(fin, report).find("1 non-manifold edges"), std::string::npos);
+  EXPECT_EQ(cvt::RepairSurfaceMesh(fin, report), "");
+  EXPECT_EQ(report.SplitEdges, 1);
+  EXPECT_EQ(fin.NumberOfPoints(), 7);
+  const cvt::MeshTopology finParts = cvt::ComputeMeshTopology(fin.NumberOfPoints(), fin.Triangles);
+  EXPECT_EQ(finParts.Components, 2);
+  EXPECT_EQ(finParts.BoundaryLoops, 2);
+  EXPECT_EQ(fin.SourceIds[5] + fin.SourceIds[6], 1); // the copies of points 0 and 1
 
   // A Moebius strip.
   cvt::SurfaceMesh strip;

@@ -8,6 +8,7 @@ of implicit surfaces, made here). Each is a kind of input the remesher must hand
   dumbbell.vtp      closed, genus 0, not star-shaped about its centroid (two balls, a bar)
   holes.vtp         a sphere with four holes (four boundary loops)
   twoparts.vtp      two disjoint closed parts
+  pieces.vtp        an assembly of 25 parts: a ball, 20 small spheres, 4 small rings (genus 1)
   box.vtp           a box with sharp edges, quads triangulated and subdivided
   dirty.vtp         a disk with duplicated points, zero-area and duplicate triangles
   disk.vtp          an open disk (one boundary loop)
@@ -135,6 +136,31 @@ def main():
     both.AddInputConnection(a.GetOutputPort())
     both.AddInputConnection(b.GetOutputPort())
     write(output(both), os.path.join(folder, 'twoparts.vtp'))
+
+    # An assembly: one ball, 20 small balls and 4 small rings around it.
+    parts = vtk.vtkAppendPolyData()
+    big = vtk.vtkSphereSource()
+    big.SetThetaResolution(60)
+    big.SetPhiResolution(40)
+    parts.AddInputConnection(big.GetOutputPort())
+    for k in range(20):
+        angle = 2 * np.pi * k / 20
+        small = vtk.vtkSphereSource()
+        small.SetRadius(0.03 + 0.004 * k)
+        small.SetCenter(0.9 * np.cos(angle), 0.9 * np.sin(angle), 0.2 * ((k % 3) - 1))
+        small.SetThetaResolution(16)
+        small.SetPhiResolution(12)
+        parts.AddInputConnection(small.GetOutputPort())
+    for k in range(4):
+        ring = implicit_surface(lambda x, y, z: torus_field(x, y, z, 0.12, 0.04),
+                                (-0.2, 0.2, -0.2, 0.2, -0.06, 0.06), 40)
+        move = vtk.vtkTransform()
+        move.Translate(1.3 * np.cos(np.pi * k / 2 + 0.3), 1.3 * np.sin(np.pi * k / 2 + 0.3), 0.0)
+        moved = vtk.vtkTransformPolyDataFilter()
+        moved.SetTransform(move)
+        moved.SetInputData(ring)
+        parts.AddInputConnection(moved.GetOutputPort())
+    write(output(parts), os.path.join(folder, 'pieces.vtp'))
 
     # A box: quads (with points repeated per face), triangulated and subdivided.
     cube = vtk.vtkCubeSource()

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Remeshes every test mesh made by Python/make_test_meshes.py (closed genus 0 to 3, a shape that
+# is not star-shaped, a sphere with four holes, two parts, an assembly of 25 parts, a box with
+# sharp edges, an open disk, a dirty disk) with `cvt surface --input` and checks that the remesh has the input's topology.
+# With the shared checks beside the project (../shared/checks), also prints the independent
+# figures: energy F n / A^2 of the sites on the input, Hausdorff distances, valence, angles.
+# Usage: remesh-meshes.sh PATH/TO/cvt [SITES] [MESH...]     (the benchmark mode of issue 10)
+set -u
+CVT=${1:?usage: remesh-meshes.sh PATH/TO/cvt [SITES] [MESH...]}
+SITES=${2:-1000}
+shift $(( $# >= 2 ? 2 : 1 ))
+HERE=$(cd "$(dirname "$0")" && pwd)
+CHECKS="$HERE/../../shared/checks"
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+/usr/bin/python3 "$HERE/Python/make_test_meshes.py" "$T/meshes" || { echo "cannot make the test meshes"; exit 1; }
+MESHES=${*:-sphere genus2 genus3 dumbbell holes twoparts pieces box disk dirty}
+bad=0
+for m in $MESHES; do
+  out="$T/$m"
+  if ! env -u DISPLAY "$CVT" surface --input "$T/meshes/$m.vtp" --sites "$SITES" --report \
+      --output "$out" > "$T/$m.log" 2>&1; then
+    echo "$m: cvt failed:"; cat "$T/$m.log"; bad=1; continue
+  fi
+  input=$(sed -n 's/^  input topology *//p' "$T/$m.log")
+  remesh=$(sed -n 's/^  remesh topology *//p' "$T/$m.log")
+  line="$m ($SITES sites): $remesh; $(sed -n 's/^  valence 6 *//p' "$T/$m.log") valence 6, angles $(sed -n 's/^  smallest \/ largest angle *//p' "$T/$m.log"); $(sed -n 's/^  seconds: //p' "$T/$m.log")"
+  if [ -d "$CHECKS" ]; then
+    line="$line; $(/usr/bin/python3 "$CHECKS/mesh_energy.py" "$T/meshes/$m.vtp" "$out/sites.csv" "$out/remesh.vtp" --samples 400000 | sed 's/.*normalized=/F n \/ A^2 = /')"
+  fi
+  echo "$line"
+  if [ "$input" != "$remesh" ] || grep -q "topology differs" "$T/$m.log"; then
+    echo "  the remesh's topology differs from the input's ($input)"; bad=1
+  fi
+done
+[ $bad -eq 0 ] && echo "remesh meshes: ok" || { echo "remesh meshes: FAILED"; exit 1; }
