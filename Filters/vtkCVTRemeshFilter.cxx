@@ -24,6 +24,7 @@
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -138,6 +139,11 @@ int vtkCVTRemeshFilter::RequestData(
   remeshOut->Initialize();
   historyOut->Initialize();
 
+  using Clock = std::chrono::steady_clock;
+  const auto since = [](Clock::time_point start)
+  { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  Clock::time_point stage = Clock::now();
+
   // --- The input as a repaired triangle mesh.
   if (!input || input->GetNumberOfPoints() == 0)
   {
@@ -228,12 +234,15 @@ int vtkCVTRemeshFilter::RequestData(
   options.LloydWarmUpIterations = std::min(5, this->MaximumNumberOfIterations);
   cvt::OptimizerResult result;
   std::string error;
+  const bool meshSet = engine.SetMesh(mesh);
+  const double prepareSeconds = since(stage);
+  stage = Clock::now();
   const auto progress = [this](double fraction)
   {
     this->UpdateProgress(0.95 * fraction);
     return !this->GetAbortExecute();
   };
-  const bool optimized = engine.SetMesh(mesh) &&
+  const bool optimized = meshSet &&
     (this->Method == LLOYD ? cvt::RunMeshLloyd(engine, initial, options, progress, result, error)
                            : cvt::RunMeshLBFGS(engine, initial, options, progress, result, error));
   if (!optimized)
@@ -242,6 +251,9 @@ int vtkCVTRemeshFilter::RequestData(
       "The surface CVT failed: " << (error.empty() ? engine.GetLastError() : error) << ".");
     return 0;
   }
+
+  const double optimizeSeconds = since(stage);
+  stage = Clock::now();
 
   // --- The dual: the remesh's vertices are the sites' nearest surface points. The sites
   // themselves stay where the CVT put them (slightly inside curved surfaces: the centroids of
@@ -344,6 +356,9 @@ int vtkCVTRemeshFilter::RequestData(
       << "): too few sites for the thinnest parts; use more sites.");
   }
   cvtvtk::FillHistoryTable(historyOut, result.History);
+  cvtvtk::AddFieldValue(fields, "PrepareSeconds", prepareSeconds);
+  cvtvtk::AddFieldValue(fields, "OptimizeSeconds", optimizeSeconds);
+  cvtvtk::AddFieldValue(fields, "RemeshSeconds", since(stage));
   this->UpdateProgress(1.0);
   return 1;
 }

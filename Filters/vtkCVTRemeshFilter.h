@@ -17,7 +17,9 @@
  * 0. sites: the final sites (vtkPolyData vertices: the centroids of their restricted cells, so
  *    slightly inside curved surfaces), SiteId, Mass, Energy; field
  *    data Energy, GradientNorm, Iterations, Evaluations, StopReason, SurfaceArea, Engine and
- *    EngineReason, and the input's topology;
+ *    EngineReason, the input's topology, and the seconds spent per stage (PrepareSeconds:
+ *    cleaning, repairs, topology and engine set-up; OptimizeSeconds; RemeshSeconds: the dual,
+ *    the remesh and the outputs);
  * 1. labels: the cleaned input with an int point array SiteId (the nearest site);
  * 2. remesh: the restricted Delaunay triangulation of the sites: vertices on the surface
  *    (sites whose cell meets the border are pinned to it), oriented like the input, the input's

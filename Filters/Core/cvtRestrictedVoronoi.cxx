@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_set>
 
 namespace cvt
 {
@@ -171,12 +170,15 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
 {
   const auto& tri = this->Mesh.Triangles[t];
   this->WholeTriangle(t, polygon);
+  // Clipping alternates between the output polygon and a scratch one (pointers, no copies).
   const double* s = &this->Sites[3 * static_cast<size_t>(site)];
   const size_t siteCount = this->Sites.size() / 3;
   const std::uint32_t* ids = &this->Neighbors[static_cast<size_t>(site) * this->K];
   const double* d2 = &this->NeighborDistance2[static_cast<size_t>(site) * this->K];
   size_t available = static_cast<size_t>(this->K);
-  Polygon clipped;
+  Polygon scratch;
+  Polygon* current = &polygon;
+  Polygon* clipped = &scratch;
   double dist[MaximumPolygonSize];
   double radius2 = -1.0; // of the polygon about the site; < 0: to be computed
   for (size_t n = 0;; ++n)
@@ -214,9 +216,9 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
     if (radius2 < 0.0)
     {
       radius2 = 0.0;
-      for (int v = 0; v < polygon.Size; ++v)
+      for (int v = 0; v < current->Size; ++v)
       {
-        radius2 = std::max(radius2, Distance2(polygon.V[v].P, s));
+        radius2 = std::max(radius2, Distance2(current->V[v].P, s));
       }
     }
     if (4.0 * radius2 < d2[n])
@@ -232,7 +234,7 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
       // Coincident sites: the lower index takes the cell, the other gets nothing.
       if (j < site)
       {
-        polygon.Size = 0;
+        current->Size = 0;
         return false;
       }
       continue;
@@ -243,9 +245,9 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
       return Dot(w, normal) - offset;
     };
     bool anyOut = false, anyIn = false;
-    for (int v = 0; v < polygon.Size; ++v)
+    for (int v = 0; v < current->Size; ++v)
     {
-      dist[v] = side(polygon.V[v].P);
+      dist[v] = side(current->V[v].P);
       (dist[v] > 0.0 ? anyOut : anyIn) = true;
     }
     if (!anyOut)
@@ -254,24 +256,24 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
     }
     if (!anyIn)
     {
-      polygon.Size = 0;
+      current->Size = 0;
       return false;
     }
-    clipped.Size = 0;
-    for (int v = 0; v < polygon.Size && clipped.Size < MaximumPolygonSize - 1; ++v)
+    clipped->Size = 0;
+    for (int v = 0; v < current->Size && clipped->Size < MaximumPolygonSize - 1; ++v)
     {
-      const PolygonVertex& a = polygon.V[v];
-      const PolygonVertex& b = polygon.V[(v + 1) % polygon.Size];
-      const double da = dist[v], db = dist[(v + 1) % polygon.Size];
+      const PolygonVertex& a = current->V[v];
+      const PolygonVertex& b = current->V[(v + 1) % current->Size];
+      const double da = dist[v], db = dist[(v + 1) % current->Size];
       if (da <= 0.0)
       {
-        clipped.V[clipped.Size++] = a;
+        clipped->V[clipped->Size++] = a;
       }
       if ((da <= 0.0) == (db <= 0.0))
       {
         continue;
       }
-      PolygonVertex& p = clipped.V[clipped.Size++];
+      PolygonVertex& p = clipped->V[clipped->Size++];
       p.Origin = -1;
       p.Label = da <= 0.0 ? j : a.Label;
       if (a.Label < 0)
@@ -300,13 +302,18 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
         }
       }
     }
-    std::swap(polygon, clipped);
+    std::swap(current, clipped);
     radius2 = -1.0;
-    if (polygon.Size < 3)
+    if (current->Size < 3)
     {
-      polygon.Size = 0;
+      current->Size = 0;
       return false;
     }
+  }
+  if (current != &polygon)
+  {
+    std::copy(current->V, current->V + current->Size, polygon.V);
+    polygon.Size = current->Size;
   }
   return polygon.Size >= 3;
 }
@@ -644,7 +651,8 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
   const int triangleCount = mesh.NumberOfTriangles();
   d.Normals.assign(3 * static_cast<size_t>(triangleCount), 0.0);
   d.OnMeshBoundary.assign(triangleCount, { 0, 0, 0 });
-  std::unordered_map<std::uint64_t, int> edgeUse;
+  std::vector<std::uint64_t> edgeKeys; // every triangle edge once per triangle, sorted
+  edgeKeys.reserve(3 * static_cast<size_t>(triangleCount));
   const auto key = [](int a, int b)
   {
     return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
@@ -667,9 +675,10 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
     }
     for (int e = 0; e < 3; ++e)
     {
-      ++edgeUse[key(tri[e], tri[(e + 1) % 3])];
+      edgeKeys.push_back(key(tri[e], tri[(e + 1) % 3]));
     }
   }
+  std::sort(edgeKeys.begin(), edgeKeys.end());
   // Boundary edges, and the boundary points where the border turns by more than a threshold.
   d.Corner.assign(mesh.NumberOfPoints(), 0);
   std::vector<int> next(mesh.NumberOfPoints(), -1), previous(mesh.NumberOfPoints(), -1);
@@ -678,7 +687,9 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
     const auto& tri = mesh.Triangles[t];
     for (int e = 0; e < 3; ++e)
     {
-      if (edgeUse[key(tri[e], tri[(e + 1) % 3])] == 1)
+      const auto uses =
+        std::equal_range(edgeKeys.begin(), edgeKeys.end(), key(tri[e], tri[(e + 1) % 3]));
+      if (uses.second - uses.first == 1)
       {
         d.OnMeshBoundary[t][e] = 1;
         next[tri[e]] = tri[(e + 1) % 3];

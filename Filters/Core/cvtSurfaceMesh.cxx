@@ -51,22 +51,69 @@ struct UnionFind
   std::vector<int> Parent;
 };
 
-/// The triangles on each undirected edge, as (triangle, local edge) pairs.
-using EdgeMap = std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>>;
-
-EdgeMap MapEdges(const std::vector<std::array<int, 3>>& triangles)
+/// The triangles on each undirected edge: (key, triangle, local edge) sorted by key, so one
+/// edge's uses are adjacent (much faster to build than a hash map of vectors).
+struct EdgeUse
 {
-  EdgeMap edges;
-  edges.reserve(triangles.size() * 2);
-  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+  std::uint64_t Key;
+  int Triangle;
+  int Local;
+  bool operator<(const EdgeUse& other) const
   {
-    for (int e = 0; e < 3; ++e)
-    {
-      edges[EdgeKey(triangles[t][e], triangles[t][(e + 1) % 3])].emplace_back(t, e);
-    }
+    return this->Key != other.Key ? this->Key < other.Key : this->Triangle < other.Triangle;
   }
-  return edges;
-}
+};
+
+class EdgeTable
+{
+public:
+  struct Range
+  {
+    const EdgeUse* First;
+    const EdgeUse* Last;
+    const EdgeUse* begin() const { return this->First; }
+    const EdgeUse* end() const { return this->Last; }
+    size_t size() const { return static_cast<size_t>(this->Last - this->First); }
+    std::uint64_t Key() const { return this->First->Key; }
+  };
+
+  explicit EdgeTable(const std::vector<std::array<int, 3>>& triangles)
+  {
+    this->Uses.reserve(3 * triangles.size());
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    {
+      for (int e = 0; e < 3; ++e)
+      {
+        this->Uses.push_back({ EdgeKey(triangles[t][e], triangles[t][(e + 1) % 3]), t, e });
+      }
+    }
+    std::sort(this->Uses.begin(), this->Uses.end());
+    for (size_t u = 0; u < this->Uses.size(); ++u)
+    {
+      if (u == 0 || this->Uses[u].Key != this->Uses[u - 1].Key)
+      {
+        this->Starts.push_back(u);
+      }
+    }
+    this->Starts.push_back(this->Uses.size());
+  }
+  size_t NumberOfEdges() const { return this->Starts.size() - 1; }
+  Range Edge(size_t e) const
+  {
+    return { this->Uses.data() + this->Starts[e], this->Uses.data() + this->Starts[e + 1] };
+  }
+  Range Find(std::uint64_t key) const
+  {
+    const auto range = std::equal_range(this->Uses.begin(), this->Uses.end(), EdgeUse{ key, -1, 0 },
+      [](const EdgeUse& a, const EdgeUse& b) { return a.Key < b.Key; });
+    return { this->Uses.data() + (range.first - this->Uses.begin()),
+      this->Uses.data() + (range.second - this->Uses.begin()) };
+  }
+
+private:
+  std::vector<EdgeUse> Uses;
+  std::vector<size_t> Starts;
+};
 
 std::string Where(const SurfaceMesh& mesh, int point)
 {
@@ -76,66 +123,58 @@ std::string Where(const SurfaceMesh& mesh, int point)
   return text.str();
 }
 
-/// Splits every point whose triangles form several fans (joined through edges at the point).
-int SplitNonManifoldPoints(SurfaceMesh& mesh)
+/// Splits every point whose triangles form several fans: the corners (triangle, point) of the
+/// two triangles of each edge are joined at the edge's end points, and each group of corners
+/// beyond a point's first becomes a copy of the point.
+int SplitNonManifoldPoints(SurfaceMesh& mesh, const EdgeTable& edges)
 {
-  const int n = mesh.NumberOfPoints();
-  std::vector<std::vector<int>> around(n);
+  const auto corner = [&mesh](int t, int p)
+  {
+    const auto& tri = mesh.Triangles[t];
+    return 3 * t + (tri[0] == p ? 0 : (tri[1] == p ? 1 : 2));
+  };
+  UnionFind fans(3 * mesh.Triangles.size());
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
+  {
+    const EdgeTable::Range edge = edges.Edge(e);
+    if (edge.size() != 2)
+    {
+      continue;
+    }
+    const int t1 = edge.begin()->Triangle, t2 = (edge.begin() + 1)->Triangle;
+    for (int p : { static_cast<int>(edge.Key() >> 32), static_cast<int>(edge.Key() & 0xffffffffu) })
+    {
+      fans.Join(corner(t1, p), corner(t2, p));
+    }
+  }
+  std::vector<int> firstFan(mesh.NumberOfPoints(), -1);
+  std::unordered_map<int, int> copyOfFan; // only for the fans of non-manifold points
+  int split = 0;
   for (int t = 0; t < mesh.NumberOfTriangles(); ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
-      around[mesh.Triangles[t][k]].push_back(t);
-    }
-  }
-  int split = 0;
-  for (int p = 0; p < n; ++p)
-  {
-    const std::vector<int>& fan = around[p];
-    if (fan.size() < 2)
-    {
-      continue;
-    }
-    // Triangles at p are joined when they share an edge (p, q).
-    UnionFind groups(fan.size());
-    std::unordered_map<int, int> firstWithOther;
-    for (size_t f = 0; f < fan.size(); ++f)
-    {
-      for (int q : mesh.Triangles[fan[f]])
+      int& p = mesh.Triangles[t][k];
+      const int fan = fans.Find(3 * t + k);
+      if (firstFan[p] < 0)
       {
-        if (q == p)
-        {
-          continue;
-        }
-        auto found = firstWithOther.emplace(q, static_cast<int>(f));
-        if (!found.second)
-        {
-          groups.Join(static_cast<int>(f), found.first->second);
-        }
+        firstFan[p] = fan;
       }
-    }
-    std::unordered_map<int, int> copyOfGroup;
-    for (size_t f = 0; f < fan.size(); ++f)
-    {
-      const int root = groups.Find(static_cast<int>(f));
-      auto found = copyOfGroup.emplace(root, copyOfGroup.empty() ? p : -1);
-      if (found.second && found.first->second < 0)
+      else if (firstFan[p] != fan)
       {
-        found.first->second = mesh.NumberOfPoints();
-        mesh.Points.insert(mesh.Points.end(), mesh.Point(p), mesh.Point(p) + 3);
-        if (!mesh.Density.empty())
+        auto found = copyOfFan.emplace(fan, mesh.NumberOfPoints());
+        if (found.second)
         {
-          mesh.Density.push_back(mesh.Density[p]);
+          mesh.Points.insert(mesh.Points.end(), mesh.Point(p), mesh.Point(p) + 3);
+          if (!mesh.Density.empty())
+          {
+            mesh.Density.push_back(mesh.Density[p]);
+          }
+          mesh.SourceIds.push_back(mesh.SourceIds[p]);
+          firstFan.push_back(fan);
+          ++split;
         }
-        mesh.SourceIds.push_back(mesh.SourceIds[p]);
-        ++split;
-      }
-      for (int& q : mesh.Triangles[fan[f]])
-      {
-        if (q == p)
-        {
-          q = found.first->second;
-        }
+        p = found.first->second;
       }
     }
   }
@@ -227,28 +266,42 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
     mesh.SourceIds.resize(mesh.NumberOfPoints());
     std::iota(mesh.SourceIds.begin(), mesh.SourceIds.end(), 0);
   }
-  // Degenerate and duplicate triangles.
+  // Degenerate and duplicate triangles (duplicates found by sorting their point triples).
   {
-    std::vector<std::array<int, 3>> kept;
-    kept.reserve(mesh.Triangles.size());
-    std::unordered_map<std::uint64_t, std::vector<std::array<int, 3>>> seen;
-    for (const auto& t : mesh.Triangles)
+    std::vector<std::pair<std::array<int, 3>, int>> sorted;
+    sorted.reserve(mesh.Triangles.size());
+    std::vector<char> keep(mesh.Triangles.size(), 1);
+    for (size_t t = 0; t < mesh.Triangles.size(); ++t)
     {
-      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(TriangleArea(mesh, t) > 0.0))
+      const auto& tri = mesh.Triangles[t];
+      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] ||
+        !(TriangleArea(mesh, tri) > 0.0))
       {
         ++report.DegenerateTriangles;
+        keep[t] = 0;
         continue;
       }
-      std::array<int, 3> sorted = t;
-      std::sort(sorted.begin(), sorted.end());
-      auto& bucket = seen[EdgeKey(sorted[0], sorted[1])];
-      if (std::find(bucket.begin(), bucket.end(), sorted) != bucket.end())
+      std::array<int, 3> key = tri;
+      std::sort(key.begin(), key.end());
+      sorted.emplace_back(key, static_cast<int>(t));
+    }
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t k = 1; k < sorted.size(); ++k)
+    {
+      if (sorted[k].first == sorted[k - 1].first)
       {
         ++report.DuplicateTriangles;
-        continue;
+        keep[sorted[k].second] = 0; // the first in input order stays
       }
-      bucket.push_back(sorted);
-      kept.push_back(t);
+    }
+    std::vector<std::array<int, 3>> kept;
+    kept.reserve(mesh.Triangles.size());
+    for (size_t t = 0; t < mesh.Triangles.size(); ++t)
+    {
+      if (keep[t])
+      {
+        kept.push_back(mesh.Triangles[t]);
+      }
     }
     mesh.Triangles.swap(kept);
   }
@@ -258,27 +311,26 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   }
   // Non-manifold edges: the first triangle on the edge keeps it with the first one that agrees
   // with its orientation (else the second); the others get their own copies of its two points.
-  EdgeMap edges = MapEdges(mesh.Triangles);
+  EdgeTable edges(mesh.Triangles);
   {
     std::vector<std::uint64_t> crowded;
-    for (const auto& edge : edges)
+    for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
     {
-      if (edge.second.size() > 2)
+      if (edges.Edge(e).size() > 2)
       {
-        crowded.push_back(edge.first);
+        crowded.push_back(edges.Edge(e).Key());
       }
     }
-    std::sort(crowded.begin(), crowded.end());
     for (std::uint64_t key : crowded)
     {
       const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
       std::vector<int> on; // the triangles that still have this edge
-      for (const auto& use : edges[key])
+      for (const EdgeUse& use : edges.Find(key))
       {
-        const auto& t = mesh.Triangles[use.first];
+        const auto& t = mesh.Triangles[use.Triangle];
         if (std::count(t.begin(), t.end(), a) && std::count(t.begin(), t.end(), b))
         {
-          on.push_back(use.first);
+          on.push_back(use.Triangle);
         }
       }
       if (on.size() <= 2)
@@ -331,7 +383,7 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
     }
     if (report.SplitEdges > 0)
     {
-      edges = MapEdges(mesh.Triangles);
+      edges = EdgeTable(mesh.Triangles);
     }
   }
   // Consistent orientation, component by component (breadth-first over edges).
@@ -354,15 +406,15 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
       for (int e = 0; e < 3; ++e)
       {
         const int a = mesh.Triangles[t][e], b = mesh.Triangles[t][(e + 1) % 3];
-        for (const auto& other : edges[EdgeKey(a, b)])
+        for (const EdgeUse& other : edges.Find(EdgeKey(a, b)))
         {
-          const int u = other.first;
+          const int u = other.Triangle;
           if (u == t)
           {
             continue;
           }
           // Agreeing orientations traverse the shared edge in opposite directions.
-          const bool sameDirection = mesh.Triangles[u][other.second] == a;
+          const bool sameDirection = mesh.Triangles[u][other.Local] == a;
           const char needed = static_cast<char>(flip[t] ^ (sameDirection ? 1 : 0));
           if (component[u] < 0)
           {
@@ -396,7 +448,8 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
     {
       for (int e = 0; e < 3 && closed; ++e)
       {
-        closed = edges[EdgeKey(mesh.Triangles[t][e], mesh.Triangles[t][(e + 1) % 3])].size() == 2;
+        closed =
+          edges.Find(EdgeKey(mesh.Triangles[t][e], mesh.Triangles[t][(e + 1) % 3])).size() == 2;
       }
     }
     const bool reverse = closed ? SignedVolume(mesh, triangles) < 0.0
@@ -411,7 +464,7 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
     }
     report.FlippedTriangles += flipped;
   }
-  report.SplitPoints = SplitNonManifoldPoints(mesh);
+  report.SplitPoints = SplitNonManifoldPoints(mesh, edges);
   // Unused points.
   std::vector<int> renumber(mesh.NumberOfPoints(), -1);
   int used = 0;
@@ -522,7 +575,7 @@ MeshTopology ComputeMeshTopology(
   int numberOfPoints, const std::vector<std::array<int, 3>>& triangles)
 {
   MeshTopology topology;
-  EdgeMap edges = MapEdges(triangles);
+  const EdgeTable edges(triangles);
   UnionFind parts(static_cast<size_t>(numberOfPoints));
   std::vector<char> used(numberOfPoints, 0);
   for (const auto& t : triangles)
@@ -535,15 +588,15 @@ MeshTopology ComputeMeshTopology(
   }
   // Boundary edges, directed as in their triangle.
   std::vector<std::pair<int, int>> border;
-  for (const auto& edge : edges)
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
   {
-    if (edge.second.size() == 1)
+    const EdgeTable::Range edge = edges.Edge(e);
+    if (edge.size() == 1)
     {
-      const auto& [t, e] = edge.second[0];
-      border.emplace_back(triangles[t][e], triangles[t][(e + 1) % 3]);
+      const auto& t = triangles[edge.begin()->Triangle];
+      border.emplace_back(t[edge.begin()->Local], t[(edge.begin()->Local + 1) % 3]);
     }
   }
-  std::sort(border.begin(), border.end()); // the hash map's order is not the same everywhere
   std::unordered_map<int, int> verticesOf, edgesOf, facesOf, loopsOf;
   for (int p = 0; p < numberOfPoints; ++p)
   {
@@ -552,9 +605,9 @@ MeshTopology ComputeMeshTopology(
       ++verticesOf[parts.Find(p)];
     }
   }
-  for (const auto& edge : edges)
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
   {
-    ++edgesOf[parts.Find(static_cast<int>(edge.first >> 32))];
+    ++edgesOf[parts.Find(static_cast<int>(edges.Edge(e).Key() >> 32))];
   }
   for (const auto& t : triangles)
   {
