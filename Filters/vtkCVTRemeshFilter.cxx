@@ -8,7 +8,6 @@
 #include "vtkCVTOutputHelpers.h"
 
 #include "vtkCellArray.h"
-#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -20,6 +19,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkStaticCleanPolyData.h"
 #include "vtkTable.h"
 #include "vtkTriangleFilter.h"
 
@@ -35,10 +35,9 @@ namespace
 /// The cleaned, triangulated input (coincident points merged, polygons and strips split).
 vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
 {
-  vtkNew<vtkCleanPolyData> merge;
+  vtkNew<vtkStaticCleanPolyData> merge; // threaded; tolerance 0 merges equal points only
   merge->SetInputData(input);
   merge->SetTolerance(0.0);
-  merge->PointMergingOn();
   merge->ConvertLinesToPointsOff();
   merge->ConvertPolysToLinesOff();
   merge->ConvertStripsToPolysOff();

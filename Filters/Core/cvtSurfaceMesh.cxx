@@ -88,15 +88,20 @@ public:
       }
     }
     std::sort(this->Uses.begin(), this->Uses.end());
+    this->GroupOf.resize(this->Uses.size());
     for (size_t u = 0; u < this->Uses.size(); ++u)
     {
       if (u == 0 || this->Uses[u].Key != this->Uses[u - 1].Key)
       {
         this->Starts.push_back(u);
       }
+      this->GroupOf[3 * static_cast<size_t>(this->Uses[u].Triangle) + this->Uses[u].Local] =
+        this->Starts.size() - 1;
     }
     this->Starts.push_back(this->Uses.size());
   }
+  /// The uses of edge `local` of triangle `t` (its own included).
+  Range At(int t, int local) const { return this->Edge(this->GroupOf[3 * static_cast<size_t>(t) + local]); }
   size_t NumberOfEdges() const { return this->Starts.size() - 1; }
   Range Edge(size_t e) const
   {
@@ -113,6 +118,7 @@ public:
 private:
   std::vector<EdgeUse> Uses;
   std::vector<size_t> Starts;
+  std::vector<size_t> GroupOf; // per (triangle, local edge)
 };
 
 std::string Where(const SurfaceMesh& mesh, int point)
@@ -406,7 +412,7 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
       for (int e = 0; e < 3; ++e)
       {
         const int a = mesh.Triangles[t][e], b = mesh.Triangles[t][(e + 1) % 3];
-        for (const EdgeUse& other : edges.Find(EdgeKey(a, b)))
+        for (const EdgeUse& other : edges.At(t, e))
         {
           const int u = other.Triangle;
           if (u == t)
@@ -448,8 +454,7 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
     {
       for (int e = 0; e < 3 && closed; ++e)
       {
-        closed =
-          edges.Find(EdgeKey(mesh.Triangles[t][e], mesh.Triangles[t][(e + 1) % 3])).size() == 2;
+        closed = edges.At(t, e).size() == 2;
       }
     }
     const bool reverse = closed ? SignedVolume(mesh, triangles) < 0.0
