@@ -97,7 +97,7 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       if (found.second)
       {
         const size_t i = static_cast<size_t>(site);
-        const bool border = dual.OnBoundary[i] != 0;
+        const bool border = dual.Pinned[i] != 0;
         const double* p = border ? &dual.BoundaryPoints[3 * i] : &dual.SurfacePoints[3 * i];
         const double* lambda =
           border ? &dual.BoundaryBarycentric[3 * i] : &dual.SurfaceBarycentric[3 * i];

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 
 namespace cvt
 {
@@ -84,18 +85,29 @@ struct SiteContact
   // The parts of the mesh border in this piece of the cell (at most one per triangle edge).
   int SegmentCount;
   double Segments[3][6];
+  bool TouchesBorder; // one of the segments is on the mesh's border (not a feature line)
+  double Area;        // of this piece of the cell
 };
 
 constexpr int NeighborCount = 20;
 constexpr double CornerAngleDegrees = 60.0;
+/// Edges whose triangles' normals differ by more are sharp (CAD models' creases) ...
+constexpr double FeatureAngleDegrees = 60.0;
+/// ... when they form lines at least this fraction of the bounding-box diagonal long (scanner
+/// noise makes short ones).
+constexpr double MinimumFeatureLength = 0.03;
 }
 
 struct RestrictedVoronoi::Internals
 {
   SurfaceMesh Mesh;
-  std::vector<double> Normals;                     // unit normal per triangle
-  std::vector<std::array<char, 3>> OnMeshBoundary; // per triangle edge
-  std::vector<char> Corner; // per point: a boundary point where the border turns
+  std::vector<double> Normals; // unit normal per triangle
+  /// Per triangle edge: 0 inside, 1 on the mesh's border, 2 on a sharp feature line. Cells that
+  /// meet a border or feature line are pinned to it in the remesh.
+  std::vector<std::array<char, 3>> OnMeshBoundary;
+  std::vector<char> Corner; // per point: where a border or feature line turns, ends or meets
+  void FindBordersAndFeatures(const std::vector<std::uint64_t>& keys,
+    const std::vector<int>& triangles, const std::vector<int>& locals);
 
   std::vector<double> Sites;
   SiteCloud Cloud;
@@ -403,6 +415,19 @@ void RestrictedVoronoi::Internals::Contact(
   contact.BoundaryRank = 0;
   contact.BoundaryDistance2 = std::numeric_limits<double>::infinity();
   contact.SegmentCount = 0;
+  contact.TouchesBorder = false;
+  contact.Area = 0.0;
+  for (int v = 1; v + 1 < polygon.Size; ++v)
+  {
+    const double* p0 = polygon.V[0].P;
+    const double e1[3] = { polygon.V[v].P[0] - p0[0], polygon.V[v].P[1] - p0[1],
+      polygon.V[v].P[2] - p0[2] };
+    const double e2[3] = { polygon.V[v + 1].P[0] - p0[0], polygon.V[v + 1].P[1] - p0[1],
+      polygon.V[v + 1].P[2] - p0[2] };
+    double cross[3];
+    Cross(e1, e2, cross);
+    contact.Area += 0.5 * std::sqrt(Dot(cross, cross));
+  }
   // The projection onto the plane, when it falls inside the (convex) polygon.
   const double height = (s[0] - polygon.V[0].P[0]) * n[0] + (s[1] - polygon.V[0].P[1]) * n[1] +
     (s[2] - polygon.V[0].P[2]) * n[2];
@@ -455,6 +480,7 @@ void RestrictedVoronoi::Internals::Contact(
     }
     if (a.Label < 0 && this->OnMeshBoundary[t][-1 - a.Label] && contact.SegmentCount < 3)
     {
+      contact.TouchesBorder |= this->OnMeshBoundary[t][-1 - a.Label] == 1;
       contact.BoundaryRank = std::max(contact.BoundaryRank, 1);
       double* segment = contact.Segments[contact.SegmentCount++];
       std::copy(a.P, a.P + 3, segment);
@@ -640,6 +666,135 @@ const std::vector<int>& RestrictedVoronoi::GetPointLabels() const
 }
 
 //------------------------------------------------------------------------------
+// Borders (edges of one triangle) and sharp feature lines (edges of two triangles whose normals
+// differ by more than FeatureAngleDegrees, in lines of at least MinimumFeatureLength), and the
+// corners of both: where a line turns by more than CornerAngleDegrees, ends or meets others.
+void RestrictedVoronoi::Internals::FindBordersAndFeatures(const std::vector<std::uint64_t>& keys,
+  const std::vector<int>& triangles, const std::vector<int>& locals)
+{
+  const SurfaceMesh& mesh = this->Mesh;
+  const int pointCount = mesh.NumberOfPoints();
+  struct Line
+  {
+    int A, B; // directed as in its (first) triangle
+    char Kind;
+  };
+  std::vector<Line> lines;
+  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+  for (int p = 0; p < pointCount; ++p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], mesh.Point(p)[k]);
+      hi[k] = std::max(hi[k], mesh.Point(p)[k]);
+    }
+  }
+  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
+    (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  const double sharp = std::cos(FeatureAngleDegrees * 3.14159265358979323846 / 180.0);
+  for (size_t u = 0; u < keys.size();)
+  {
+    size_t end = u + 1;
+    while (end < keys.size() && keys[end] == keys[u])
+    {
+      ++end;
+    }
+    const int t = triangles[u], e = locals[u];
+    const int a = mesh.Triangles[t][e], b = mesh.Triangles[t][(e + 1) % 3];
+    if (end - u == 1)
+    {
+      lines.push_back({ a, b, 1 });
+    }
+    else if (end - u == 2 &&
+      Dot(&this->Normals[3 * static_cast<size_t>(t)],
+        &this->Normals[3 * static_cast<size_t>(triangles[u + 1])]) < sharp)
+    {
+      lines.push_back({ a, b, 2 });
+    }
+    u = end;
+  }
+  // Feature lines shorter than the threshold are dropped (joined through shared points).
+  std::vector<int> chain(pointCount);
+  std::iota(chain.begin(), chain.end(), 0);
+  const auto find = [&chain](int p)
+  {
+    while (chain[p] != p)
+    {
+      p = chain[p] = chain[chain[p]];
+    }
+    return p;
+  };
+  for (const Line& line : lines)
+  {
+    if (line.Kind == 2)
+    {
+      chain[find(line.A)] = find(line.B);
+    }
+  }
+  std::vector<double> chainLength(pointCount, 0.0);
+  for (const Line& line : lines)
+  {
+    if (line.Kind == 2)
+    {
+      chainLength[find(line.A)] += std::sqrt(Distance2(mesh.Point(line.A), mesh.Point(line.B)));
+    }
+  }
+  std::vector<std::uint64_t> kept; // keys of the edges that pin
+  std::vector<char> kindOfKept;
+  std::vector<int> degree(pointCount, 0);
+  std::vector<int> neighbor1(pointCount, -1), neighbor2(pointCount, -1);
+  for (const Line& line : lines)
+  {
+    if (line.Kind == 2 && chainLength[find(line.A)] < MinimumFeatureLength * diagonal)
+    {
+      continue;
+    }
+    kept.push_back((static_cast<std::uint64_t>(std::min(line.A, line.B)) << 32) |
+      static_cast<std::uint32_t>(std::max(line.A, line.B)));
+    kindOfKept.push_back(line.Kind);
+    for (int end = 0; end < 2; ++end)
+    {
+      const int p = end ? line.B : line.A, q = end ? line.A : line.B;
+      (neighbor1[p] < 0 ? neighbor1[p] : neighbor2[p]) = q;
+      ++degree[p];
+    }
+  }
+  // Mark the pinning edges of every triangle (kept is in key order: keys were sorted).
+  for (size_t u = 0, k = 0; u < keys.size() && k < kept.size(); ++u)
+  {
+    while (k < kept.size() && kept[k] < keys[u])
+    {
+      ++k;
+    }
+    if (k < kept.size() && kept[k] == keys[u])
+    {
+      this->OnMeshBoundary[triangles[u]][locals[u]] = kindOfKept[k];
+    }
+  }
+  const double cosine = std::cos(CornerAngleDegrees * 3.14159265358979323846 / 180.0);
+  this->Corner.assign(pointCount, 0);
+  for (int p = 0; p < pointCount; ++p)
+  {
+    if (degree[p] == 0)
+    {
+      continue;
+    }
+    if (degree[p] != 2)
+    {
+      this->Corner[p] = 1; // a line ends here, or lines meet
+      continue;
+    }
+    const double* x = mesh.Point(p);
+    const double* a = mesh.Point(neighbor1[p]);
+    const double* b = mesh.Point(neighbor2[p]);
+    const double in[3] = { x[0] - a[0], x[1] - a[1], x[2] - a[2] };
+    const double out[3] = { b[0] - x[0], b[1] - x[1], b[2] - x[2] };
+    const double lengths = std::sqrt(Dot(in, in) * Dot(out, out));
+    this->Corner[p] = lengths > 0.0 && Dot(in, out) < cosine * lengths;
+  }
+}
+
+//------------------------------------------------------------------------------
 bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
 {
   Internals& d = *this->Impl;
@@ -651,13 +806,9 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
   const int triangleCount = mesh.NumberOfTriangles();
   d.Normals.assign(3 * static_cast<size_t>(triangleCount), 0.0);
   d.OnMeshBoundary.assign(triangleCount, { 0, 0, 0 });
-  std::vector<std::uint64_t> edgeKeys; // every triangle edge once per triangle, sorted
-  edgeKeys.reserve(3 * static_cast<size_t>(triangleCount));
-  const auto key = [](int a, int b)
-  {
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
-      static_cast<std::uint32_t>(std::max(a, b));
-  };
+  // Every triangle edge once per triangle, sorted by its points: the uses of an edge adjoin.
+  std::vector<std::pair<std::uint64_t, int>> uses;
+  uses.reserve(3 * static_cast<size_t>(triangleCount));
   for (int t = 0; t < triangleCount; ++t)
   {
     const auto& tri = mesh.Triangles[t];
@@ -675,43 +826,22 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
     }
     for (int e = 0; e < 3; ++e)
     {
-      edgeKeys.push_back(key(tri[e], tri[(e + 1) % 3]));
+      const int p = tri[e], q = tri[(e + 1) % 3];
+      uses.emplace_back((static_cast<std::uint64_t>(std::min(p, q)) << 32) |
+          static_cast<std::uint32_t>(std::max(p, q)),
+        3 * t + e);
     }
   }
-  std::sort(edgeKeys.begin(), edgeKeys.end());
-  // Boundary edges, and the boundary points where the border turns by more than a threshold.
-  d.Corner.assign(mesh.NumberOfPoints(), 0);
-  std::vector<int> next(mesh.NumberOfPoints(), -1), previous(mesh.NumberOfPoints(), -1);
-  for (int t = 0; t < triangleCount; ++t)
+  std::sort(uses.begin(), uses.end());
+  std::vector<std::uint64_t> keys(uses.size());
+  std::vector<int> triangles(uses.size()), locals(uses.size());
+  for (size_t u = 0; u < uses.size(); ++u)
   {
-    const auto& tri = mesh.Triangles[t];
-    for (int e = 0; e < 3; ++e)
-    {
-      const auto uses =
-        std::equal_range(edgeKeys.begin(), edgeKeys.end(), key(tri[e], tri[(e + 1) % 3]));
-      if (uses.second - uses.first == 1)
-      {
-        d.OnMeshBoundary[t][e] = 1;
-        next[tri[e]] = tri[(e + 1) % 3];
-        previous[tri[(e + 1) % 3]] = tri[e];
-      }
-    }
+    keys[u] = uses[u].first;
+    triangles[u] = uses[u].second / 3;
+    locals[u] = uses[u].second % 3;
   }
-  const double cosine = std::cos(CornerAngleDegrees * 3.14159265358979323846 / 180.0);
-  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
-  {
-    if (next[p] < 0 || previous[p] < 0)
-    {
-      continue;
-    }
-    const double* x = mesh.Point(p);
-    const double* a = mesh.Point(previous[p]);
-    const double* b = mesh.Point(next[p]);
-    const double in[3] = { x[0] - a[0], x[1] - a[1], x[2] - a[2] };
-    const double out[3] = { b[0] - x[0], b[1] - x[1], b[2] - x[2] };
-    const double lengths = std::sqrt(Dot(in, in) * Dot(out, out));
-    d.Corner[p] = lengths > 0.0 && Dot(in, out) < cosine * lengths;
-  }
+  d.FindBordersAndFeatures(keys, triangles, locals);
   // Fixed blocks of triangles: the sums are added in the same order for any thread count.
   d.BlockCount = std::max(1, std::min(256, triangleCount / 256));
   d.BlockPieces.assign(d.BlockCount, {});
@@ -852,6 +982,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   dual.SurfaceTriangles.assign(siteCount, -1);
   dual.SurfaceBarycentric.assign(3 * siteCount, 0.0);
   dual.OnBoundary.assign(siteCount, 0);
+  dual.Pinned.assign(siteCount, 0);
   dual.BoundaryPoints.assign(3 * siteCount, 0.0);
   dual.BoundaryTriangles.assign(siteCount, -1);
   dual.BoundaryBarycentric.assign(3 * siteCount, 0.0);
@@ -859,6 +990,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   std::vector<int> boundaryRank(siteCount, 0);
   std::vector<double> boundary2(siteCount, std::numeric_limits<double>::infinity());
   std::vector<double> borderLength(siteCount, 0.0), borderMoment(3 * siteCount, 0.0);
+  std::vector<double> cellArea(siteCount, 0.0);
   for (const auto& block : d.BlockContacts)
   {
     for (const SiteContact& c : block)
@@ -877,6 +1009,8 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         dual.BoundaryTriangles[i] = c.Triangle;
       }
       boundaryRank[i] = std::max(boundaryRank[i], c.BoundaryRank);
+      dual.OnBoundary[i] |= c.TouchesBorder ? 1 : 0;
+      cellArea[i] += c.Area;
       for (int s = 0; s < c.SegmentCount; ++s)
       {
         const double* segment = c.Segments[s];
@@ -887,6 +1021,17 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
           borderMoment[3 * i + k] += 0.5 * length * (segment[k] + segment[3 + k]);
         }
       }
+    }
+  }
+  // A cell that only grazes feature lines (its part of them is short for its size) is not
+  // pinned, not even to a corner: moving its vertex there would make needle triangles, and
+  // jagged creases (marching cubes) have many small turns.
+  for (size_t i = 0; i < siteCount; ++i)
+  {
+    if (boundaryRank[i] > 0 && !dual.OnBoundary[i] &&
+      borderLength[i] < 0.8 * std::sqrt(cellArea[i]))
+    {
+      boundaryRank[i] = 0;
     }
   }
   // Cells on the border without a corner: pinned to the border point nearest to the centroid
@@ -928,8 +1073,8 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       d.Barycentric(
         dual.SurfaceTriangles[i], &dual.SurfacePoints[3 * i], &dual.SurfaceBarycentric[3 * i]);
     }
-    dual.OnBoundary[i] = boundaryRank[i] > 0;
-    if (dual.OnBoundary[i])
+    dual.Pinned[i] = boundaryRank[i] > 0;
+    if (dual.Pinned[i])
     {
       d.Barycentric(
         dual.BoundaryTriangles[i], &dual.BoundaryPoints[3 * i], &dual.BoundaryBarycentric[3 * i]);

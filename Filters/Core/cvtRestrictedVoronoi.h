@@ -28,10 +28,13 @@ struct RestrictedDual
   std::vector<double> SurfacePoints;
   std::vector<int> SurfaceTriangles;
   std::vector<double> SurfaceBarycentric;
-  /// Per site: whether its cell meets the mesh boundary, and then the boundary point it is
-  /// pinned to in the remesh (a boundary corner of its cell, else its boundary point nearest
-  /// to the site), with triangle and barycentric coordinates as above.
+  /// Per site: whether its cell meets the mesh's border; whether it meets the border or a sharp
+  /// feature line (edges whose triangles meet at more than 60 degrees, in lines at least 3% of
+  /// the bounding-box diagonal long), and then the point of those lines it is pinned to in the
+  /// remesh (a corner of its cell, else the point nearest to the centroid of its part of the
+  /// lines), with triangle and barycentric coordinates as above.
   std::vector<char> OnBoundary;
+  std::vector<char> Pinned;
   std::vector<double> BoundaryPoints;
   std::vector<int> BoundaryTriangles;
   std::vector<double> BoundaryBarycentric;

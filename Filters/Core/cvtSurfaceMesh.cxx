@@ -101,7 +101,10 @@ public:
     this->Starts.push_back(this->Uses.size());
   }
   /// The uses of edge `local` of triangle `t` (its own included).
-  Range At(int t, int local) const { return this->Edge(this->GroupOf[3 * static_cast<size_t>(t) + local]); }
+  Range At(int t, int local) const
+  {
+    return this->Edge(this->GroupOf[3 * static_cast<size_t>(t) + local]);
+  }
   size_t NumberOfEdges() const { return this->Starts.size() - 1; }
   Range Edge(size_t e) const
   {

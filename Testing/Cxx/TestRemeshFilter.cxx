@@ -7,18 +7,22 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkDiskSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkImageData.h"
+#include "vtkLinearSubdivisionFilter.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSphereSource.h"
+#include "vtkStaticCleanPolyData.h"
 #include "vtkTable.h"
+#include "vtkTriangleFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -217,6 +221,50 @@ TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)
     right += sites->GetPoint(i)[0] > 0;
   }
   EXPECT_GT(right, 0.6 * sites->GetNumberOfPoints());
+}
+
+TEST(RemeshFilter, BoxKeepsItsCornersAndEdges)
+{
+  // Quads with points repeated per face: merged, triangulated, subdivided into a fine mesh.
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(2.0);
+  cube->SetYLength(1.0);
+  cube->SetZLength(0.6);
+  vtkNew<vtkStaticCleanPolyData> merge;
+  merge->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(merge->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> finer;
+  finer->SetInputConnection(triangles->GetOutputPort());
+  finer->SetNumberOfSubdivisions(4);
+  finer->Update();
+  RemeshRun run(finer->GetOutput(), 400, 40);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  vtkPolyData* remesh = run.Remesh();
+  ExpectTopology(remesh, 1, 0, 0);
+  EXPECT_GT(Field(remesh, "MinimumAngle"), 25.0);
+  // Each of the 8 corners is a vertex; vertices near an edge of the box lie on it.
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double c[3] = { corner & 1 ? 1.0 : -1.0, corner & 2 ? 0.5 : -0.5,
+      corner & 4 ? 0.3 : -0.3 };
+    double nearest = 1e300;
+    for (vtkIdType v = 0; v < remesh->GetNumberOfPoints(); ++v)
+    {
+      const double* p = remesh->GetPoint(v);
+      nearest = std::min(nearest, std::hypot(p[0] - c[0], p[1] - c[1], p[2] - c[2]));
+    }
+    EXPECT_LT(nearest, 1e-6) << "corner " << corner; // the cube's points are floats
+  }
+  int onEdges = 0;
+  for (vtkIdType v = 0; v < remesh->GetNumberOfPoints(); ++v)
+  {
+    const double* p = remesh->GetPoint(v);
+    const int onFaces = (std::abs(std::abs(p[0]) - 1.0) < 1e-6) +
+      (std::abs(std::abs(p[1]) - 0.5) < 1e-6) + (std::abs(std::abs(p[2]) - 0.3) < 1e-6);
+    onEdges += onFaces >= 2;
+  }
+  EXPECT_GT(onEdges, 40); // the 12 edges, 7.2 units long, at a spacing of about 0.12
 }
 
 TEST(RemeshFilter, RepairsAndReportsDirtyInput)
