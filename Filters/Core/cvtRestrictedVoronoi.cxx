@@ -991,6 +991,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   std::vector<double> boundary2(siteCount, std::numeric_limits<double>::infinity());
   std::vector<double> borderLength(siteCount, 0.0), borderMoment(3 * siteCount, 0.0);
   std::vector<double> cellArea(siteCount, 0.0);
+  std::vector<char> severalCorners(siteCount, 0);
   for (const auto& block : d.BlockContacts)
   {
     for (const SiteContact& c : block)
@@ -1001,6 +1002,11 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         nearest2[i] = c.Distance2;
         std::copy(c.Point, c.Point + 3, &dual.SurfacePoints[3 * i]);
         dual.SurfaceTriangles[i] = c.Triangle;
+      }
+      if (c.BoundaryRank == 2 && boundaryRank[i] == 2 &&
+        Distance2(c.BoundaryPoint, &dual.BoundaryPoints[3 * i]) > 0.0)
+      {
+        severalCorners[i] = 1;
       }
       if (c.BoundaryRank == 2 && (boundaryRank[i] < 2 || c.BoundaryDistance2 < boundary2[i]))
       {
@@ -1032,6 +1038,10 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       borderLength[i] < 0.8 * std::sqrt(cellArea[i]))
     {
       boundaryRank[i] = 0;
+    }
+    else if (boundaryRank[i] == 2 && severalCorners[i])
+    {
+      boundaryRank[i] = 1; // a jagged border: its centroid, not one of its teeth
     }
   }
   // Cells on the border without a corner: pinned to the border point nearest to the centroid
