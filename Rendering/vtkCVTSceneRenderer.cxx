@@ -169,17 +169,28 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1.0, 1.0, 1.0);
   renderer->AddActor(actor);
+  // Any surface, any size: look mostly along the box's thinnest axis (the largest face in
+  // view), tilted so relief shows, with the longest axis across the (landscape) picture.
   vtkCamera* camera = renderer->GetActiveCamera();
   double bounds[6];
   mesh->GetBounds(bounds);
-  const double cx = 0.5 * (bounds[0] + bounds[1]), cy = 0.5 * (bounds[2] + bounds[3]),
-               cz = 0.5 * (bounds[4] + bounds[5]);
-  camera->SetFocalPoint(cx, cy, cz);
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  int axes[3] = { 0, 1, 2 }; // thinnest, middle, longest
+  std::sort(axes, axes + 3,
+    [&bounds](int a, int b)
+    { return bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * b + 1] - bounds[2 * b]; });
+  double direction[3] = { 0.0, 0.0, 0.0 }, up[3] = { 0.0, 0.0, 0.0 };
+  direction[axes[0]] = 1.0;
+  direction[axes[1]] = -0.6;
+  up[axes[1]] = 1.0;
+  camera->SetFocalPoint(center);
   camera->SetPosition(
-    cx, cy - 2.0 * (bounds[3] - bounds[2]), cz + 2.0 * (bounds[5] - bounds[4]) + 1.0);
-  camera->SetViewUp(0.0, 0.0, 1.0);
+    center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
+  camera->SetViewUp(up);
+  camera->OrthogonalizeViewUp();
   renderer->ResetCamera();
-  camera->Zoom(1.5);
+  camera->Zoom(1.3);
   return this->Snapshot(renderer, this->Size, (this->Size * 3) / 4);
 }
 

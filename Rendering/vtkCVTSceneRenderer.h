@@ -52,8 +52,9 @@ public:
   vtkSmartPointer<vtkImageData> Render(vtkImageData* labels, vtkPolyData* sites);
 
   /**
-   * Render a surface mesh (a remesh) seen from above at an angle, each triangle in its own
-   * colour with its edges drawn, into an RGB image. nullptr when there is no context.
+   * Render a surface mesh (a remesh) of any shape and size, seen mostly along the thinnest axis
+   * of its bounding box and tilted, the longest axis across, each triangle in its own colour
+   * with its edges drawn, into an RGB image. nullptr when there is no context.
    */
   vtkSmartPointer<vtkImageData> RenderMesh(vtkPolyData* mesh);
   const std::string& GetLastError() const { return this->LastError; }

@@ -1,11 +1,17 @@
 #include "cvtExactEngine.h"
 
 #include "cvtExactVoronoi.h"
+#include "cvtThreads.h"
 
 #include <algorithm>
 
 namespace cvt
 {
+
+ExactEngine::ExactEngine()
+{
+  UseThreads();
+}
 
 bool ExactEngine::SetDomain(const Grid& grid, const std::vector<float>& density)
 {
@@ -21,6 +27,7 @@ bool ExactEngine::SetDomain(const Grid& grid, const std::vector<float>& density)
   const bool uniform =
     std::all_of(density.begin(), density.end(), [](float v) { return v == 1.0f; });
   this->Density = uniform ? std::vector<float>() : density;
+  this->Tables = DensityTables(grid, this->Density);
   this->HaveSums = false;
   return true;
 }
@@ -42,7 +49,7 @@ bool ExactEngine::ComputeCellSums(CellSums& sums)
   {
     return this->Fail("SetSites must succeed before ComputeCellSums");
   }
-  this->LastSums = ExactCellSums(this->Domain, this->Sites, this->Density);
+  this->LastSums = ExactCellSums(this->Domain, this->Sites, this->Density, this->Tables);
   this->HaveSums = true;
   sums = this->LastSums;
   return true;
@@ -74,7 +81,7 @@ bool ExactEngine::GetSites(std::vector<double>& sites)
 
 bool ExactEngine::GetLabels(std::vector<int>& labels)
 {
-  labels = BruteForceLabels(this->Domain, this->Sites);
+  labels = NearestSiteLabels(this->Domain, this->Sites);
   return true;
 }
 

@@ -1,11 +1,13 @@
 // The exact CPU engine: the cvt::Engine seam served by clipped Voronoi polygons, so that the
 // optimisers run unchanged on exact integrals (the reference the GPU engine is measured
-// against, and a second engine behind the same seam).
+// against, and the engine of machines without a GPU). Cells are clipped and integrated in
+// parallel (vtkSMPTools); with a density, row prefix sums integrate the pixels inside a cell.
 #ifndef cvtExactEngine_h
 #define cvtExactEngine_h
 
 #include "cvtCoreModule.h" // for export macro
 #include "cvtEngine.h"
+#include "cvtExactVoronoi.h" // for DensityTables
 
 namespace cvt
 {
@@ -13,6 +15,7 @@ namespace cvt
 class CVTCORE_EXPORT ExactEngine : public Engine
 {
 public:
+  ExactEngine();
   /// An all-ones density is treated as uniform (exact polygon integrals, no pixel cuts).
   bool SetDomain(const Grid& grid, const std::vector<float>& density) override;
   bool SetSites(const std::vector<double>& sites) override;
@@ -24,6 +27,7 @@ public:
 private:
   Grid Domain;
   std::vector<float> Density; // empty: uniform
+  DensityTables Tables;
   std::vector<double> Sites;
   CellSums LastSums;
   bool HaveSums = false;

@@ -1,5 +1,11 @@
 #include "cvtExactVoronoi.h"
 
+#include "vtkSMPTools.h"
+
+#include <nanoflann.hpp>
+
+#include <cstdint>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -139,8 +145,11 @@ std::vector<Polygon> ClippedVoronoiCells(const Grid& grid, const std::vector<dou
   const Buckets buckets(grid, sites);
   const double bucketSide = std::min(buckets.Width, buckets.Height);
   std::vector<Polygon> cells(n);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), 64,
+    [&](vtkIdType begin, vtkIdType end)
+    {
   std::vector<size_t> ring;
-  for (size_t i = 0; i < n; ++i)
+  for (vtkIdType i = begin; i < end; ++i)
   {
     const double sx = sites[2 * i], sy = sites[2 * i + 1];
     const int column = buckets.Column(sx), row = buckets.Row(sy);
@@ -172,78 +181,234 @@ std::vector<Polygon> ClippedVoronoiCells(const Grid& grid, const std::vector<dou
     }
     cells[i] = std::move(cell);
   }
+    });
   return cells;
+}
+
+DensityTables::DensityTables(const Grid& grid, const std::vector<float>& density)
+{
+  if (density.empty())
+  {
+    return;
+  }
+  const size_t stride = static_cast<size_t>(grid.Width) + 1;
+  this->Stride = stride;
+  for (auto* table : { &this->Rho, &this->RhoX, &this->RhoY, &this->RhoR2 })
+  {
+    table->assign(stride * grid.Height, 0.0);
+  }
+  for (int j = 0; j < grid.Height; ++j)
+  {
+    const double cy = (j + 0.5) * grid.Spacing[1];
+    for (int i = 0; i < grid.Width; ++i)
+    {
+      const double rho = density[static_cast<size_t>(j) * grid.Width + i];
+      const double cx = (i + 0.5) * grid.Spacing[0];
+      const size_t k = j * stride + i;
+      this->Rho[k + 1] = this->Rho[k] + rho;
+      this->RhoX[k + 1] = this->RhoX[k] + rho * cx;
+      this->RhoY[k + 1] = this->RhoY[k] + rho * cy;
+      this->RhoR2[k + 1] = this->RhoR2[k] + rho * (cx * cx + cy * cy);
+    }
+  }
+}
+
+namespace
+{
+/// Whether (x, y) is inside the counter-clockwise convex polygon.
+bool InsideConvex(const Polygon& polygon, double x, double y)
+{
+  const size_t n = polygon.Size();
+  for (size_t k = 0; k < n; ++k)
+  {
+    const double ex = polygon.X[(k + 1) % n] - polygon.X[k];
+    const double ey = polygon.Y[(k + 1) % n] - polygon.Y[k];
+    if (ex * (y - polygon.Y[k]) - ey * (x - polygon.X[k]) < 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The integrals of one cell with a pixelwise-constant density: pixels wholly inside the cell
+/// come from the row prefix sums (a contiguous run per row, the cell being convex), the
+/// pixels on its border are clipped exactly.
+void DensityCellSums(const Grid& grid, const std::vector<float>& density,
+  const DensityTables& tables, const Polygon& cell, double sx, double sy, double sums[4])
+{
+  double xmin = cell.X[0], xmax = cell.X[0], ymin = cell.Y[0], ymax = cell.Y[0];
+  for (size_t k = 1; k < cell.Size(); ++k)
+  {
+    xmin = std::min(xmin, cell.X[k]);
+    xmax = std::max(xmax, cell.X[k]);
+    ymin = std::min(ymin, cell.Y[k]);
+    ymax = std::max(ymax, cell.Y[k]);
+  }
+  const auto column = [&grid](double x)
+  {
+    return std::clamp(
+      static_cast<int>(std::floor((x - grid.Origin[0]) / grid.Spacing[0])), 0, grid.Width - 1);
+  };
+  const auto row = [&grid](double y)
+  {
+    return std::clamp(
+      static_cast<int>(std::floor((y - grid.Origin[1]) / grid.Spacing[1])), 0, grid.Height - 1);
+  };
+  const double area = grid.PixelArea();
+  const double pixelInertia =
+    (grid.Spacing[0] * grid.Spacing[0] + grid.Spacing[1] * grid.Spacing[1]) / 12.0;
+  // The site relative to the grid's origin, as the tables' pixel centres are.
+  const double rx = sx - grid.Origin[0], ry = sy - grid.Origin[1];
+  const auto partial = [&](const Polygon& band, int px, int py)
+  {
+    const double rho = density[static_cast<size_t>(py) * grid.Width + px];
+    if (rho == 0.0)
+    {
+      return;
+    }
+    const double x0 = grid.Origin[0] + px * grid.Spacing[0], x1 = x0 + grid.Spacing[0];
+    const Polygon piece = ClipPolygon(ClipPolygon(band, 1.0, 0.0, x1), -1.0, 0.0, -x0);
+    if (piece.Size() < 3)
+    {
+      return;
+    }
+    const PolygonIntegrals r = IntegratePolygon(piece, sx, sy);
+    sums[0] += rho * r.Area;
+    sums[1] += rho * r.MomentX;
+    sums[2] += rho * r.MomentY;
+    sums[3] += rho * r.SecondMoment;
+  };
+  for (int py = row(ymin); py <= row(ymax); ++py)
+  {
+    const double y0 = grid.Origin[1] + py * grid.Spacing[1], y1 = y0 + grid.Spacing[1];
+    const Polygon band = ClipPolygon(ClipPolygon(cell, 0.0, 1.0, y1), 0.0, -1.0, -y0);
+    if (band.Size() < 3)
+    {
+      continue;
+    }
+    const auto full = [&](int px)
+    {
+      const double x0 = grid.Origin[0] + px * grid.Spacing[0], x1 = x0 + grid.Spacing[0];
+      return InsideConvex(cell, x0, y0) && InsideConvex(cell, x1, y0) &&
+        InsideConvex(cell, x1, y1) && InsideConvex(cell, x0, y1);
+    };
+    int first = column(xmin), last = column(xmax);
+    while (first <= last && !full(first))
+    {
+      partial(band, first++, py);
+    }
+    while (last >= first && !full(last))
+    {
+      partial(band, last--, py);
+    }
+    if (first > last)
+    {
+      continue;
+    }
+    // Pixels first..last are wholly inside: rho A, rho A (c - s), rho A (|c - s|^2 + inertia).
+    const size_t k0 = py * tables.Stride + first, k1 = py * tables.Stride + last + 1;
+    const double rho = tables.Rho[k1] - tables.Rho[k0];
+    const double rhoX = tables.RhoX[k1] - tables.RhoX[k0];
+    const double rhoY = tables.RhoY[k1] - tables.RhoY[k0];
+    const double rhoR2 = tables.RhoR2[k1] - tables.RhoR2[k0];
+    sums[0] += area * rho;
+    sums[1] += area * (rhoX - rx * rho);
+    sums[2] += area * (rhoY - ry * rho);
+    sums[3] += area *
+      (rhoR2 - 2.0 * (rx * rhoX + ry * rhoY) + (rx * rx + ry * ry) * rho + pixelInertia * rho);
+  }
+}
 }
 
 CellSums ExactCellSums(
   const Grid& grid, const std::vector<double>& sites, const std::vector<float>& density)
 {
+  return ExactCellSums(grid, sites, density, DensityTables(grid, density));
+}
+
+CellSums ExactCellSums(const Grid& grid, const std::vector<double>& sites,
+  const std::vector<float>& density, const DensityTables& tables)
+{
   const size_t n = sites.size() / 2;
   const std::vector<Polygon> cells = ClippedVoronoiCells(grid, sites);
   CellSums sums;
   sums.Resize(n);
-  for (size_t i = 0; i < n; ++i)
-  {
-    const double sx = sites[2 * i], sy = sites[2 * i + 1];
-    const Polygon& cell = cells[i];
-    if (cell.Size() < 3)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), 64,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      continue;
-    }
-    if (density.empty())
-    {
-      const PolygonIntegrals r = IntegratePolygon(cell, sx, sy);
-      sums.Mass[i] = r.Area;
-      sums.MomentX[i] = r.MomentX;
-      sums.MomentY[i] = r.MomentY;
-      sums.Energy[i] = r.SecondMoment;
-      continue;
-    }
-    // Pixelwise constant density: integrate the cell piece inside every pixel it overlaps.
-    double xmin = cell.X[0], xmax = cell.X[0], ymin = cell.Y[0], ymax = cell.Y[0];
-    for (size_t k = 1; k < cell.Size(); ++k)
-    {
-      xmin = std::min(xmin, cell.X[k]);
-      xmax = std::max(xmax, cell.X[k]);
-      ymin = std::min(ymin, cell.Y[k]);
-      ymax = std::max(ymax, cell.Y[k]);
-    }
-    const auto column = [&grid](double x)
-    {
-      return std::clamp(
-        static_cast<int>(std::floor((x - grid.Origin[0]) / grid.Spacing[0])), 0, grid.Width - 1);
-    };
-    const auto row = [&grid](double y)
-    {
-      return std::clamp(
-        static_cast<int>(std::floor((y - grid.Origin[1]) / grid.Spacing[1])), 0, grid.Height - 1);
-    };
-    for (int py = row(ymin); py <= row(ymax); ++py)
-    {
-      const double y0 = grid.Origin[1] + py * grid.Spacing[1], y1 = y0 + grid.Spacing[1];
-      Polygon band = ClipPolygon(ClipPolygon(cell, 0.0, 1.0, y1), 0.0, -1.0, -y0);
-      for (int px = column(xmin); px <= column(xmax) && band.Size() >= 3; ++px)
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        const double rho = density[static_cast<size_t>(py) * grid.Width + px];
-        if (rho == 0.0)
+        const double sx = sites[2 * i], sy = sites[2 * i + 1];
+        const Polygon& cell = cells[i];
+        if (cell.Size() < 3)
         {
           continue;
         }
-        const double x0 = grid.Origin[0] + px * grid.Spacing[0], x1 = x0 + grid.Spacing[0];
-        const Polygon piece = ClipPolygon(ClipPolygon(band, 1.0, 0.0, x1), -1.0, 0.0, -x0);
-        if (piece.Size() < 3)
+        if (density.empty())
         {
+          const PolygonIntegrals r = IntegratePolygon(cell, sx, sy);
+          sums.Mass[i] = r.Area;
+          sums.MomentX[i] = r.MomentX;
+          sums.MomentY[i] = r.MomentY;
+          sums.Energy[i] = r.SecondMoment;
           continue;
         }
-        const PolygonIntegrals r = IntegratePolygon(piece, sx, sy);
-        sums.Mass[i] += rho * r.Area;
-        sums.MomentX[i] += rho * r.MomentX;
-        sums.MomentY[i] += rho * r.MomentY;
-        sums.Energy[i] += rho * r.SecondMoment;
+        double cellSums[4] = { 0.0, 0.0, 0.0, 0.0 };
+        DensityCellSums(grid, density, tables, cell, sx, sy, cellSums);
+        sums.Mass[i] = cellSums[0];
+        sums.MomentX[i] = cellSums[1];
+        sums.MomentY[i] = cellSums[2];
+        sums.Energy[i] = cellSums[3];
       }
-    }
-  }
+    });
   return sums;
+}
+
+namespace
+{
+struct PlanarSites
+{
+  const std::vector<double>* Sites = nullptr;
+  size_t kdtree_get_point_count() const { return this->Sites->size() / 2; }
+  double kdtree_get_pt(size_t i, size_t d) const { return (*this->Sites)[2 * i + d]; }
+  template<class Box>
+  bool kdtree_get_bbox(Box&) const
+  {
+    return false;
+  }
+};
+}
+
+std::vector<int> NearestSiteLabels(const Grid& grid, const std::vector<double>& sites)
+{
+  std::vector<int> labels(static_cast<size_t>(grid.NumberOfPixels()), -1);
+  if (sites.size() < 2)
+  {
+    return labels;
+  }
+  PlanarSites cloud;
+  cloud.Sites = &sites;
+  const nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PlanarSites>,
+    PlanarSites, 2, std::uint32_t>
+    tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  vtkSMPTools::For(0, grid.Height, 8,
+    [&](int first, int last)
+    {
+      for (int j = first; j < last; ++j)
+      {
+        for (int i = 0; i < grid.Width; ++i)
+        {
+          const double x[2] = { grid.Origin[0] + (i + 0.5) * grid.Spacing[0],
+            grid.Origin[1] + (j + 0.5) * grid.Spacing[1] };
+          std::uint32_t id = 0;
+          double d2 = 0.0;
+          tree.knnSearch(x, 1, &id, &d2);
+          labels[static_cast<size_t>(j) * grid.Width + i] = static_cast<int>(id);
+        }
+      }
+    });
+  return labels;
 }
 
 std::vector<int> BruteForceLabels(const Grid& grid, const std::vector<double>& sites)

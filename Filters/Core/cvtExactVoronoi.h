@@ -36,10 +36,28 @@ CVTCORE_EXPORT Polygon ClipPolygon(const Polygon& polygon, double a, double b, d
 CVTCORE_EXPORT std::vector<Polygon> ClippedVoronoiCells(
   const Grid& grid, const std::vector<double>& sites);
 
-/// Exact per-cell integrals. An empty density means uniform density 1; otherwise the density is
-/// constant over each pixel (row-major, one value per pixel).
+/// Row prefix sums of rho, rho x, rho y and rho |x|^2 over pixel centres (relative to the
+/// grid's origin): the pixels wholly inside a cell cost O(rows) instead of O(pixels).
+struct CVTCORE_EXPORT DensityTables
+{
+  DensityTables() = default;
+  DensityTables(const Grid& grid, const std::vector<float>& density);
+  size_t Stride = 0; // Width + 1
+  std::vector<double> Rho, RhoX, RhoY, RhoR2;
+};
+
+/// Exact per-cell integrals, in parallel over the cells (vtkSMPTools). An empty density means
+/// uniform density 1; otherwise the density is constant over each pixel (row-major, one value
+/// per pixel).
 CVTCORE_EXPORT CellSums ExactCellSums(
   const Grid& grid, const std::vector<double>& sites, const std::vector<float>& density);
+/// The same with the density's tables made once (the exact engine keeps them).
+CVTCORE_EXPORT CellSums ExactCellSums(const Grid& grid, const std::vector<double>& sites,
+  const std::vector<float>& density, const DensityTables& tables);
+
+/// Nearest site of every pixel centre, with a k-d tree, in parallel (ties: either site).
+CVTCORE_EXPORT std::vector<int> NearestSiteLabels(
+  const Grid& grid, const std::vector<double>& sites);
 
 /// Nearest site of every pixel centre, by brute force (ties: the lower index).
 CVTCORE_EXPORT std::vector<int> BruteForceLabels(

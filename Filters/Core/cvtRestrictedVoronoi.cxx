@@ -1,5 +1,7 @@
 #include "cvtRestrictedVoronoi.h"
 
+#include "cvtThreads.h"
+
 #include "vtkSMPTools.h"
 
 #include <nanoflann.hpp>
@@ -650,12 +652,7 @@ void RestrictedVoronoi::Internals::Sweep(bool dual)
 RestrictedVoronoi::RestrictedVoronoi()
   : Impl(new Internals)
 {
-  // ParaView's VTK defaults to the sequential backend; use the threads when they were built.
-  if (vtkSMPTools::GetBackend() && std::string(vtkSMPTools::GetBackend()) == "Sequential" &&
-    !std::getenv("VTK_SMP_BACKEND_IN_USE"))
-  {
-    vtkSMPTools::SetBackend("STDThread");
-  }
+  UseThreads();
 }
 
 RestrictedVoronoi::~RestrictedVoronoi() = default;
