@@ -67,3 +67,55 @@ TEST(ExactVoronoi, BruteForceLabelsPickTheNearestSite)
   EXPECT_EQ(labels[15], 1);
   EXPECT_EQ(labels[1 * 4 + 0], 0);
 }
+
+TEST(ExactVoronoi, PrefixSumsMatchPixelByPixelClipping)
+{
+  // An uneven grid and density; the oracle clips every cell to every pixel it overlaps.
+  cvt::Grid grid;
+  grid.Width = 37;
+  grid.Height = 29;
+  grid.Origin[0] = -1.3;
+  grid.Origin[1] = 0.4;
+  grid.Spacing[0] = 0.07;
+  grid.Spacing[1] = 0.05;
+  std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()));
+  for (size_t p = 0; p < density.size(); ++p)
+  {
+    density[p] = static_cast<float>((p * 7919) % 13) / 4.0f; // zeros included
+  }
+  const auto sites = cvt::SampleSites(grid, density, 40, 5);
+  const cvt::CellSums sums = cvt::ExactCellSums(grid, sites, density);
+  const std::vector<cvt::Polygon> cells = cvt::ClippedVoronoiCells(grid, sites);
+  for (size_t i = 0; i < cells.size(); ++i)
+  {
+    double mass = 0.0, mx = 0.0, my = 0.0, energy = 0.0;
+    for (int py = 0; py < grid.Height; ++py)
+    {
+      for (int px = 0; px < grid.Width; ++px)
+      {
+        const double x0 = grid.Origin[0] + px * grid.Spacing[0], x1 = x0 + grid.Spacing[0];
+        const double y0 = grid.Origin[1] + py * grid.Spacing[1], y1 = y0 + grid.Spacing[1];
+        cvt::Polygon piece = cvt::ClipPolygon(cells[i], 1.0, 0.0, x1);
+        piece = cvt::ClipPolygon(piece, -1.0, 0.0, -x0);
+        piece = cvt::ClipPolygon(piece, 0.0, 1.0, y1);
+        piece = cvt::ClipPolygon(piece, 0.0, -1.0, -y0);
+        if (piece.Size() < 3)
+        {
+          continue;
+        }
+        const double rho = density[static_cast<size_t>(py) * grid.Width + px];
+        const auto r = cvt::IntegratePolygon(piece, sites[2 * i], sites[2 * i + 1]);
+        mass += rho * r.Area;
+        mx += rho * r.MomentX;
+        my += rho * r.MomentY;
+        energy += rho * r.SecondMoment;
+      }
+    }
+    EXPECT_NEAR(sums.Mass[i], mass, 1e-12) << "cell " << i;
+    EXPECT_NEAR(sums.MomentX[i], mx, 1e-12);
+    EXPECT_NEAR(sums.MomentY[i], my, 1e-12);
+    EXPECT_NEAR(sums.Energy[i], energy, 1e-12);
+  }
+  // The k-d tree labels agree with brute force.
+  EXPECT_EQ(cvt::NearestSiteLabels(grid, sites), cvt::BruteForceLabels(grid, sites));
+}
