@@ -70,6 +70,10 @@ Input:
                           physical extent of the image domain (default: the image's own
                           geometry; with no --input, [-1,1]^2)
   --resolution N          grid size when there is no --input (default 512)
+  --engine auto|cpu|opengl
+                          image: opengl runs on the GPU; cpu integrates exact Voronoi polygons
+                          in parallel; auto (default) takes opengl on a hardware GPU and cpu when
+                          the only OpenGL is a software renderer (llvmpipe) or there is none
 Surface (cvt surface):
   --torus R r             a torus of ring radius R and tube radius r (default 1 0.4)
   --gi-resolution W H     geometry image size (default 1024 512)
@@ -285,10 +289,6 @@ Options ParseArguments(int argc, char* argv[])
   if (options.Engine != "auto" && options.Engine != "cpu" && options.Engine != "opengl")
   {
     Fail("--engine must be auto, cpu or opengl, got '" + options.Engine + "'", 2);
-  }
-  if (options.Command == "image" && options.Engine == "cpu")
-  {
-    Fail("--engine cpu is for 'cvt surface --input MESH'; 'cvt image' runs on OpenGL", 2);
   }
   if (options.Command == "surface" && !options.Array.empty() && options.Input.empty())
   {
@@ -621,7 +621,11 @@ void PrintSummary(
             << sites->GetFieldData()->GetAbstractArray("StopReason")->GetVariantValue(0).ToString()
             << "), energy " << std::setprecision(8) << Field(sites, "Energy") << ", |grad F| "
             << Field(sites, "GradientNorm") << "\n"
-            << "  OpenGL: " << context << "\n"
+            << "  engine: "
+            << sites->GetFieldData()->GetAbstractArray("Engine")->GetVariantValue(0).ToString()
+            << " ("
+            << sites->GetFieldData()->GetAbstractArray("EngineReason")->GetVariantValue(0).ToString()
+            << ")" << (context.empty() ? "" : "; OpenGL: " + context) << "\n"
             << "  wrote " << files << " in " << options.Output << "\n";
 }
 
@@ -659,6 +663,9 @@ int RunImage(const Options& options)
   }
   SetOptimizer(options, cvt.Get());
   cvt->SetComputeExactEnergy(options.Report);
+  cvt->SetEngine(options.Engine == "opengl" ? vtkCVTImageFilter::OPENGL
+      : options.Engine == "cpu"             ? vtkCVTImageFilter::CPU
+                                            : vtkCVTImageFilter::AUTO);
   Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTImageFilter*>(f)->GetSitesOutput(); });
 
   const std::string dir = OutputFolder(options);
@@ -677,7 +684,7 @@ int RunImage(const Options& options)
               << "  method                      " << options.Method << "\n"
               << "  iterations / evaluations    " << Field(sites, "Iterations") << " / "
               << Field(sites, "Evaluations") << "\n"
-              << "  energy F (GPU)              " << Field(sites, "Energy") << "\n"
+              << "  energy F (engine)           " << Field(sites, "Energy") << "\n"
               << "  energy F (exact, CPU)       " << Field(sites, "ExactEnergy") << "\n"
               << "  relative difference         "
               << 100.0 * Field(sites, "EnergyRelativeDifference") << " %\n"
@@ -836,7 +843,7 @@ int RunRemesh(const Options& options)
               << "), write " << writeSeconds << "\n";
     (void)out;
   }
-  PrintSummary(options, sites, "not used (CPU engine)",
+  PrintSummary(options, sites, "",
     "sites.vtp sites.csv labels.vtp remesh.vtp history.csv cvt.png");
   return 0;
 }

@@ -6,6 +6,8 @@
 #include "cvtQuality.h"
 #include "cvtSampling.h"
 #include "vtkCVTOpenGLEngine.h"
+#include "cvtExactEngine.h"
+#include "vtkCVTEngineChoice.h"
 #include "vtkCVTOutputHelpers.h"
 
 #include "vtkCellArray.h"
@@ -316,10 +318,13 @@ int vtkCVTImageFilter::RequestData(
     return 0;
   }
 
-  // --- The optimiser, on the GPU engine.
-  vtkNew<vtkCVTOpenGLEngine> engine;
-  engine->SetAdaptiveStep(this->AdaptiveJumpFlooding);
-  engine->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
+  // --- The optimiser, on the engine chosen.
+  const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
+  vtkNew<vtkCVTOpenGLEngine> gpu;
+  cvt::ExactEngine cpu;
+  cvt::Engine& engine = choice.UseOpenGL ? static_cast<cvt::Engine&>(*gpu) : cpu;
+  gpu->SetAdaptiveStep(this->AdaptiveJumpFlooding);
+  gpu->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
   options.Tolerance = this->Tolerance;
@@ -332,23 +337,27 @@ int vtkCVTImageFilter::RequestData(
     this->UpdateProgress(fraction);
     return !this->GetAbortExecute();
   };
-  const bool ok = engine->SetDomain(grid, density) && engine->SetSites(sites);
-  this->ContextDescription = engine->GetContextDescription();
+  const bool ok = engine.SetDomain(grid, density) && engine.SetSites(sites);
+  if (choice.UseOpenGL)
+  {
+    this->ContextDescription = gpu->GetContextDescription();
+  }
   const bool optimized = ok &&
-    (this->Method == LLOYD ? cvt::RunLloyd(*engine, options, progress, result, error)
-                           : cvt::RunLBFGS(*engine, grid, sites, options, progress, result, error));
+    (this->Method == LLOYD ? cvt::RunLloyd(engine, options, progress, result, error)
+                           : cvt::RunLBFGS(engine, grid, sites, options, progress, result, error));
+  const char* what = choice.UseOpenGL ? "The GPU CVT failed: " : "The CPU CVT failed: ";
   if (!optimized)
   {
-    vtkErrorMacro("The GPU CVT failed: " << (ok ? error : engine->GetLastError()) << ".");
+    vtkErrorMacro("" << what << (ok ? error : engine.GetLastError()) << ".");
     return 0;
   }
   std::vector<int> labels;
-  if (!engine->GetLabels(labels))
+  if (!engine.GetLabels(labels))
   {
-    vtkErrorMacro("The GPU CVT failed: " << engine->GetLastError() << ".");
+    vtkErrorMacro("" << what << engine.GetLastError() << ".");
     return 0;
   }
-  engine->ReleaseGraphicsResources();
+  gpu->ReleaseGraphicsResources();
   if (result.StopReason.rfind("no sufficient decrease", 0) == 0)
   {
     vtkWarningMacro("L-BFGS stopped after " << result.Iterations
@@ -380,6 +389,8 @@ int vtkCVTImageFilter::RequestData(
       fields, "EnergyRelativeDifference", (result.Sums.TotalEnergy() - exact) / exact);
   }
   cvtvtk::AddFieldString(fields, "StopReason", result.StopReason);
+  cvtvtk::AddFieldString(fields, "Engine", choice.Name);
+  cvtvtk::AddFieldString(fields, "EngineReason", choice.Reason);
 
   labelsOut->SetExtent(image->GetExtent());
   labelsOut->SetSpacing(spacing);
@@ -417,6 +428,7 @@ void vtkCVTImageFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "AdaptiveJumpFlooding: " << this->AdaptiveJumpFlooding << "\n";
   os << indent << "SplitBoundaryPixels: " << this->SplitBoundaryPixels << "\n";
+  os << indent << "Engine: " << cvtvtk::EngineKindName(this->Engine) << "\n";
   os << indent << "ContextDescription: "
      << (this->ContextDescription.empty() ? "(none)" : this->ContextDescription) << "\n";
 }

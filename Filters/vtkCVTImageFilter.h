@@ -125,7 +125,27 @@ public:
   ///@}
 
   ///@{
-  /** Engine options, see vtkCVTOpenGLEngine (both on by default). */
+  /**
+   * The engine: AUTO (default: OpenGL on a hardware GPU; the exact CPU engine, multi-threaded,
+   * when the only OpenGL is a software renderer such as llvmpipe, or there is none), OPENGL
+   * (the GPU engine; an error without an OpenGL context) or CPU. The choice and its reason are
+   * in the sites' field data (Engine, EngineReason).
+   */
+  enum Engines
+  {
+    AUTO = 0,
+    OPENGL = 1,
+    CPU = 2
+  };
+  vtkSetClampMacro(Engine, int, AUTO, CPU);
+  vtkGetMacro(Engine, int);
+  void SetEngineToAuto() { this->SetEngine(AUTO); }
+  void SetEngineToOpenGL() { this->SetEngine(OPENGL); }
+  void SetEngineToCPU() { this->SetEngine(CPU); }
+  ///@}
+
+  ///@{
+  /** OpenGL engine options, see vtkCVTOpenGLEngine (both on by default). */
   vtkSetMacro(AdaptiveJumpFlooding, bool);
   vtkGetMacro(AdaptiveJumpFlooding, bool);
   vtkBooleanMacro(AdaptiveJumpFlooding, bool);
@@ -152,7 +172,7 @@ public:
   vtkTable* GetHistoryOutput();
   ///@}
 
-  /** Description of the OpenGL context the last run used (empty before a run). */
+  /** Description of the OpenGL context the last run used (empty before a run or on the CPU). */
   const std::string& GetContextDescription() const { return this->ContextDescription; }
 
 protected:
@@ -175,6 +195,7 @@ protected:
   double Tolerance = 1e-6;
   bool AdaptiveJumpFlooding = true;
   bool SplitBoundaryPixels = true;
+  int Engine = AUTO;
   std::string ContextDescription;
 
 private:

@@ -15,13 +15,18 @@ namespace cvt
 
 PolygonIntegrals IntegratePolygon(const Polygon& polygon, double cx, double cy)
 {
+  return IntegrateVertices(polygon.X.data(), polygon.Y.data(), polygon.Size(), cx, cy);
+}
+
+PolygonIntegrals IntegrateVertices(
+  const double* x, const double* y, size_t n, double cx, double cy)
+{
   PolygonIntegrals r;
-  const size_t n = polygon.Size();
   double ixx = 0.0, iyy = 0.0;
   for (size_t k = 0; k < n; ++k)
   {
-    const double x0 = polygon.X[k] - cx, y0 = polygon.Y[k] - cy;
-    const double x1 = polygon.X[(k + 1) % n] - cx, y1 = polygon.Y[(k + 1) % n] - cy;
+    const double x0 = x[k] - cx, y0 = y[k] - cy;
+    const double x1 = x[(k + 1) % n] - cx, y1 = y[(k + 1) % n] - cy;
     const double cross = x0 * y1 - x1 * y0;
     r.Area += cross;
     r.MomentX += (x0 + x1) * cross;
@@ -40,6 +45,8 @@ Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c)
 {
   Polygon out;
   const size_t n = polygon.Size();
+  out.X.reserve(n + 1); // a convex polygon gains at most one vertex
+  out.Y.reserve(n + 1);
   for (size_t k = 0; k < n; ++k)
   {
     const double x0 = polygon.X[k], y0 = polygon.Y[k];
@@ -215,6 +222,33 @@ DensityTables::DensityTables(const Grid& grid, const std::vector<float>& density
 
 namespace
 {
+constexpr size_t SmallPolygonSize = 256;
+
+/// Keeps the part of the polygon left of x = at (keepLeft) or right of it, into fixed buffers.
+size_t ClipVertical(
+  const double* x, const double* y, size_t n, double at, bool keepLeft, double* ox, double* oy)
+{
+  size_t out = 0;
+  for (size_t k = 0; k < n && out + 2 <= SmallPolygonSize; ++k)
+  {
+    const size_t next = (k + 1) % n;
+    const double d0 = keepLeft ? x[k] - at : at - x[k];
+    const double d1 = keepLeft ? x[next] - at : at - x[next];
+    if (d0 <= 0.0)
+    {
+      ox[out] = x[k];
+      oy[out++] = y[k];
+    }
+    if ((d0 < 0.0 && d1 > 0.0) || (d0 > 0.0 && d1 < 0.0))
+    {
+      const double t = d0 / (d0 - d1);
+      ox[out] = x[k] + t * (x[next] - x[k]);
+      oy[out++] = y[k] + t * (y[next] - y[k]);
+    }
+  }
+  return out;
+}
+
 /// Whether (x, y) is inside the counter-clockwise convex polygon.
 bool InsideConvex(const Polygon& polygon, double x, double y)
 {
@@ -267,13 +301,17 @@ void DensityCellSums(const Grid& grid, const std::vector<float>& density,
     {
       return;
     }
+    // The band's piece in this pixel's column, clipped in fixed buffers (no allocation: these
+    // pieces are most of the work when cells are a few pixels wide).
     const double x0 = grid.Origin[0] + px * grid.Spacing[0], x1 = x0 + grid.Spacing[0];
-    const Polygon piece = ClipPolygon(ClipPolygon(band, 1.0, 0.0, x1), -1.0, 0.0, -x0);
-    if (piece.Size() < 3)
+    double ax[SmallPolygonSize], ay[SmallPolygonSize], bx[SmallPolygonSize], by[SmallPolygonSize];
+    size_t n = ClipVertical(band.X.data(), band.Y.data(), band.Size(), x1, true, ax, ay);
+    n = ClipVertical(ax, ay, n, x0, false, bx, by);
+    if (n < 3)
     {
       return;
     }
-    const PolygonIntegrals r = IntegratePolygon(piece, sx, sy);
+    const PolygonIntegrals r = IntegrateVertices(bx, by, n, sx, sy);
     sums[0] += rho * r.Area;
     sums[1] += rho * r.MomentX;
     sums[2] += rho * r.MomentY;

@@ -28,6 +28,9 @@ struct PolygonIntegrals
 };
 
 CVTCORE_EXPORT PolygonIntegrals IntegratePolygon(const Polygon& polygon, double cx, double cy);
+/// The same for n vertices given as coordinate arrays.
+CVTCORE_EXPORT PolygonIntegrals IntegrateVertices(
+  const double* x, const double* y, size_t n, double cx, double cy);
 
 /// Keeps the part of `polygon` where a x + b y <= c.
 CVTCORE_EXPORT Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c);

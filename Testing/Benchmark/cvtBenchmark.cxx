@@ -12,7 +12,11 @@
 //            L-BFGS evaluation at 512x256 and 1024x512, and the L-BFGS target run: energy of
 //            the final sites evaluated on a dense 2048x1024 geometry image, remesh valence and
 //            angles.
-// Usage: cvtBenchmark [timing|targets|surface|all]
+//   cpu:     the exact CPU engine (multi-threaded) on the Table 1 job (Lloyd, 216 iterations,
+//            uniform and the paper's density) and the Table 2 job (L-BFGS with the density to
+//            convergence), against the OpenGL engine's time per iteration in the same process;
+//            10,000 sites at 2048x2048.
+// Usage: cvtBenchmark [timing|targets|surface|cpu|all]
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
 #include "cvtLBFGS.h"
@@ -128,6 +132,70 @@ bool Optimize(cvt::Engine& engine, const cvt::Grid& grid, const std::vector<floa
   return ok;
 }
 
+/// The density of Rong et al.'s Table 2: exp(-20x^2-20y^2) + 0.05 sin^2(pi x) sin^2(pi y).
+std::vector<float> PaperDensity(const cvt::Grid& grid)
+{
+  std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()));
+  const double pi = 3.14159265358979323846;
+  for (int j = 0; j < grid.Height; ++j)
+  {
+    const double y = grid.Origin[1] + (j + 0.5) * grid.Spacing[1];
+    for (int i = 0; i < grid.Width; ++i)
+    {
+      const double x = grid.Origin[0] + (i + 0.5) * grid.Spacing[0];
+      density[static_cast<size_t>(j) * grid.Width + i] =
+        static_cast<float>(std::exp(-20.0 * x * x - 20.0 * y * y) +
+          0.05 * std::pow(std::sin(pi * x), 2) * std::pow(std::sin(pi * y), 2));
+    }
+  }
+  return density;
+}
+
+/// The CPU engine (exact polygons, vtkSMPTools threads) on the paper's jobs, with the OpenGL
+/// engine's milliseconds per Lloyd iteration from the same process as the baseline.
+bool CPUEngine()
+{
+  const cvt::Grid grid = cvt::Grid::Square(512, -1.0, 1.0);
+  const std::vector<float> uniform(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
+  const std::vector<float> paper = PaperDensity(grid);
+  const std::vector<double> initial = cvt::SampleSites(grid, {}, 1000, 2011);
+  cvt::ExactEngine cpu;
+  vtkNew<vtkCVTOpenGLEngine> gpu;
+  Run cpuUniform, cpuDensity, gpuUniform, cpuLBFGS;
+  if (!Optimize(cpu, grid, uniform, initial, false, 216, cpuUniform) ||
+    !Optimize(cpu, grid, paper, initial, false, 216, cpuDensity) ||
+    !Optimize(*gpu, grid, uniform, initial, false, 10, gpuUniform) ||
+    !Optimize(cpu, grid, paper, cvt::SampleSites(grid, paper, 1000, 2011), true, 1000, cpuLBFGS))
+  {
+    return false;
+  }
+  const double gpuPerIteration = 1e3 * gpuUniform.Seconds / 10.0;
+  std::printf("CPU engine, 1000 sites, 512x512, Lloyd 216 iterations (Table 1 job):\n");
+  std::printf("  uniform density: %.3f s (%.2f ms per iteration; target <= 0.55 s)\n",
+    cpuUniform.Seconds, 1e3 * cpuUniform.Seconds / 216.0);
+  std::printf("  paper's density: %.3f s (%.2f ms per iteration; target <= 1.1 s)\n",
+    cpuDensity.Seconds, 1e3 * cpuDensity.Seconds / 216.0);
+  std::printf("  OpenGL engine on this machine (%s): %.1f ms per iteration, %.0f times the CPU's\n",
+    gpu->GetContextDescription().c_str(), gpuPerIteration,
+    gpuPerIteration / (1e3 * cpuUniform.Seconds / 216.0));
+  std::printf("CPU engine, L-BFGS to convergence with the paper's density (Table 2 job): %.3f s, "
+              "%d iterations, energy %.6e (target <= 2.3 s)\n",
+    cpuLBFGS.Seconds, cpuLBFGS.Result.Iterations, cpuLBFGS.Result.Sums.TotalEnergy());
+  const cvt::Grid large = cvt::Grid::Square(2048, -1.0, 1.0);
+  const std::vector<float> largeUniform(static_cast<size_t>(large.NumberOfPixels()), 1.0f);
+  Run largeRun, largeDensity;
+  const std::vector<double> largeSites = cvt::SampleSites(large, {}, 10000, 2011);
+  if (!Optimize(cpu, large, largeUniform, largeSites, false, 10, largeRun) ||
+    !Optimize(cpu, large, PaperDensity(large), largeSites, false, 10, largeDensity))
+  {
+    return false;
+  }
+  std::printf("CPU engine, 10,000 sites, 2048x2048: %.1f ms per Lloyd iteration (uniform), "
+              "%.1f ms (paper's density)\n",
+    1e3 * largeRun.Seconds / 10.0, 1e3 * largeDensity.Seconds / 10.0);
+  return true;
+}
+
 double Percent(double value, double reference)
 {
   return 100.0 * (value - reference) / reference;
@@ -186,19 +254,7 @@ bool Targets()
   std::printf("  evaluations to Lloyd's 216-iteration energy: L-BFGS %d, Lloyd 217\n", toLloyd);
 
   // The paper's density.
-  std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()));
-  const double pi = 3.14159265358979323846;
-  for (int j = 0; j < grid.Height; ++j)
-  {
-    const double y = grid.Origin[1] + (j + 0.5) * grid.Spacing[1];
-    for (int i = 0; i < grid.Width; ++i)
-    {
-      const double x = grid.Origin[0] + (i + 0.5) * grid.Spacing[0];
-      density[static_cast<size_t>(j) * grid.Width + i] =
-        static_cast<float>(std::exp(-20.0 * x * x - 20.0 * y * y) +
-          0.05 * std::pow(std::sin(pi * x), 2) * std::pow(std::sin(pi * y), 2));
-    }
-  }
+  const std::vector<float> density = PaperDensity(grid);
   const std::vector<double> weighted = cvt::SampleSites(grid, density, 1000, 2011);
   Run gpuDensity;
   if (!Optimize(*gpu, grid, density, weighted, true, 1000, gpuDensity))
@@ -333,9 +389,10 @@ bool SurfaceTarget()
 int main(int argc, char* argv[])
 {
   const std::string what = argc > 1 ? argv[1] : "all";
-  if (what != "timing" && what != "targets" && what != "surface" && what != "all")
+  if (what != "timing" && what != "targets" && what != "surface" && what != "cpu" &&
+    what != "all")
   {
-    std::fprintf(stderr, "usage: %s [timing|targets|surface|all]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [timing|targets|surface|cpu|all]\n", argv[0]);
     return 2;
   }
   bool ok = true;
@@ -347,6 +404,10 @@ int main(int argc, char* argv[])
   if (what == "targets" || what == "all")
   {
     ok = ok && Targets();
+  }
+  if (what == "cpu" || what == "all")
+  {
+    ok = ok && CPUEngine();
   }
   if (what == "surface" || what == "all")
   {
