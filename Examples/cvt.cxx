@@ -596,7 +596,9 @@ void WritePicture(vtkImageData* picture, const std::string& error, const std::st
 {
   if (!picture)
   {
-    Fail("cannot render cvt.png: " + error);
+    // The results are written; only the picture needs OpenGL (the CPU engine does not).
+    std::cerr << "cvt: warning: cvt.png not written: " << error << "\n";
+    return;
   }
   vtkNew<vtkPNGWriter> png;
   png->SetInputData(picture);
@@ -616,17 +618,17 @@ void PrintSummary(
   {
     return;
   }
-  std::cout << "cvt " << options.Command << ": " << sites->GetNumberOfPoints() << " sites, "
-            << Field(sites, "Iterations") << " iterations ("
-            << sites->GetFieldData()->GetAbstractArray("StopReason")->GetVariantValue(0).ToString()
-            << "), energy " << std::setprecision(8) << Field(sites, "Energy") << ", |grad F| "
-            << Field(sites, "GradientNorm") << "\n"
-            << "  engine: "
-            << sites->GetFieldData()->GetAbstractArray("Engine")->GetVariantValue(0).ToString()
-            << " ("
-            << sites->GetFieldData()->GetAbstractArray("EngineReason")->GetVariantValue(0).ToString()
-            << ")" << (context.empty() ? "" : "; OpenGL: " + context) << "\n"
-            << "  wrote " << files << " in " << options.Output << "\n";
+  std::cout
+    << "cvt " << options.Command << ": " << sites->GetNumberOfPoints() << " sites, "
+    << Field(sites, "Iterations") << " iterations ("
+    << sites->GetFieldData()->GetAbstractArray("StopReason")->GetVariantValue(0).ToString()
+    << "), energy " << std::setprecision(8) << Field(sites, "Energy") << ", |grad F| "
+    << Field(sites, "GradientNorm") << "\n"
+    << "  engine: "
+    << sites->GetFieldData()->GetAbstractArray("Engine")->GetVariantValue(0).ToString() << " ("
+    << sites->GetFieldData()->GetAbstractArray("EngineReason")->GetVariantValue(0).ToString() << ")"
+    << (context.empty() ? "" : "; OpenGL: " + context) << "\n"
+    << "  wrote " << files << " in " << options.Output << "\n";
 }
 
 template<typename Filter>
@@ -837,14 +839,13 @@ int RunRemesh(const Options& options)
               << " %\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
               << Field(remesh, "MaximumAngle") << " degrees\n"
-              << "  seconds: read " << readSeconds << ", prepare "
-              << Field(sites, "PrepareSeconds") << ", optimise " << Field(sites, "OptimizeSeconds")
-              << ", remesh " << Field(sites, "RemeshSeconds") << " (CVT filter " << cvtSeconds
-              << "), write " << writeSeconds << "\n";
+              << "  seconds: read " << readSeconds << ", prepare " << Field(sites, "PrepareSeconds")
+              << ", optimise " << Field(sites, "OptimizeSeconds") << ", remesh "
+              << Field(sites, "RemeshSeconds") << " (CVT filter " << cvtSeconds << "), write "
+              << writeSeconds << "\n";
     (void)out;
   }
-  PrintSummary(options, sites, "",
-    "sites.vtp sites.csv labels.vtp remesh.vtp history.csv cvt.png");
+  PrintSummary(options, sites, "", "sites.vtp sites.csv labels.vtp remesh.vtp history.csv cvt.png");
   return 0;
 }
 

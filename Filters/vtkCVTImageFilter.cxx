@@ -1,13 +1,13 @@
 #include "vtkCVTImageFilter.h"
 
+#include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
 #include "cvtLBFGS.h"
 #include "cvtLloyd.h"
 #include "cvtQuality.h"
 #include "cvtSampling.h"
-#include "vtkCVTOpenGLEngine.h"
-#include "cvtExactEngine.h"
 #include "vtkCVTEngineChoice.h"
+#include "vtkCVTOpenGLEngine.h"
 #include "vtkCVTOutputHelpers.h"
 
 #include "vtkCellArray.h"

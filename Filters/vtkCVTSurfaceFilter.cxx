@@ -266,8 +266,8 @@ int vtkCVTSurfaceFilter::RequestData(
   cvtvtk::AddFieldValue(fields, "SurfaceArea", area);
   cvtvtk::AddFieldString(fields, "StopReason", result.StopReason);
   cvtvtk::AddFieldString(fields, "Engine", "OpenGL");
-  cvtvtk::AddFieldString(
-    fields, "EngineReason", "geometry images run on the GPU engine (CVT Remesh: any mesh on the CPU)");
+  cvtvtk::AddFieldString(fields, "EngineReason",
+    "geometry images run on the GPU engine (CVT Remesh: any mesh on the CPU)");
 
   labelsOut->ShallowCopy(input);
   vtkNew<vtkIntArray> labels;

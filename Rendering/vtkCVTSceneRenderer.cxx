@@ -185,8 +185,7 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
   direction[axes[1]] = -0.6;
   up[axes[1]] = 1.0;
   camera->SetFocalPoint(center);
-  camera->SetPosition(
-    center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
+  camera->SetPosition(center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
   camera->SetViewUp(up);
   camera->OrthogonalizeViewUp();
   renderer->ResetCamera();

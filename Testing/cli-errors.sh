@@ -72,8 +72,13 @@ expect_error "cvt: NumberOfSites is 2; a remesh needs at least 3" surface --inpu
 if [ "$(grep -cv '^cvt: warning' "$T/log")" -ne 1 ] || grep -q "ERROR: In\|vtkExecutive" "$T/log"; then
   echo "the error was not one clean line:"; cat "$T/log"; bad=1
 fi
-# No OpenGL context at all.
-if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
+# No OpenGL context at all: Auto runs on the CPU and says why; an explicit OpenGL is an error.
+if ! CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
+  echo "Auto did not fall back to the CPU without OpenGL:"; cat "$T/log"; bad=1
+elif ! grep -q "engine: CPU (Auto: no OpenGL context" "$T/log"; then
+  echo "Auto's choice without OpenGL was not reported:"; cat "$T/log"; bad=1
+fi
+if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --engine opengl --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
   echo "ran without an OpenGL context"; bad=1
 elif ! grep -q "no OpenGL >= 3.2 context" "$T/log"; then
   echo "no-context failure without a clear message:"; cat "$T/log"; bad=1

@@ -18,8 +18,7 @@ PolygonIntegrals IntegratePolygon(const Polygon& polygon, double cx, double cy)
   return IntegrateVertices(polygon.X.data(), polygon.Y.data(), polygon.Size(), cx, cy);
 }
 
-PolygonIntegrals IntegrateVertices(
-  const double* x, const double* y, size_t n, double cx, double cy)
+PolygonIntegrals IntegrateVertices(const double* x, const double* y, size_t n, double cx, double cy)
 {
   PolygonIntegrals r;
   double ixx = 0.0, iyy = 0.0;
@@ -155,39 +154,39 @@ std::vector<Polygon> ClippedVoronoiCells(const Grid& grid, const std::vector<dou
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), 64,
     [&](vtkIdType begin, vtkIdType end)
     {
-  std::vector<size_t> ring;
-  for (vtkIdType i = begin; i < end; ++i)
-  {
-    const double sx = sites[2 * i], sy = sites[2 * i + 1];
-    const int column = buckets.Column(sx), row = buckets.Row(sy);
-    Polygon cell = domain;
-    for (int r = 0; r < buckets.Count && cell.Size() > 0; ++r)
-    {
-      // Sites in ring r are at least (r - 1) bucket sides away; their bisectors miss the cell
-      // once that is more than twice the cell's radius.
-      const double nearest = std::max(0, r - 1) * bucketSide;
-      if (nearest * nearest > 4.0 * SquaredRadius(cell, sx, sy))
+      std::vector<size_t> ring;
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        break;
-      }
-      buckets.Ring(column, row, r, ring);
-      for (size_t j : ring)
-      {
-        if (j == i)
+        const double sx = sites[2 * i], sy = sites[2 * i + 1];
+        const int column = buckets.Column(sx), row = buckets.Row(sy);
+        Polygon cell = domain;
+        for (int r = 0; r < buckets.Count && cell.Size() > 0; ++r)
         {
-          continue;
+          // Sites in ring r are at least (r - 1) bucket sides away; their bisectors miss the cell
+          // once that is more than twice the cell's radius.
+          const double nearest = std::max(0, r - 1) * bucketSide;
+          if (nearest * nearest > 4.0 * SquaredRadius(cell, sx, sy))
+          {
+            break;
+          }
+          buckets.Ring(column, row, r, ring);
+          for (size_t j : ring)
+          {
+            if (j == i)
+            {
+              continue;
+            }
+            const double dx = sites[2 * j] - sx, dy = sites[2 * j + 1] - sy;
+            // Keep x with (x - s_i) . d <= |d|^2 / 2.
+            cell = ClipPolygon(cell, dx, dy, dx * sx + dy * sy + 0.5 * (dx * dx + dy * dy));
+            if (cell.Size() == 0)
+            {
+              break;
+            }
+          }
         }
-        const double dx = sites[2 * j] - sx, dy = sites[2 * j + 1] - sy;
-        // Keep x with (x - s_i) . d <= |d|^2 / 2.
-        cell = ClipPolygon(cell, dx, dy, dx * sx + dy * sy + 0.5 * (dx * dx + dy * dy));
-        if (cell.Size() == 0)
-        {
-          break;
-        }
+        cells[i] = std::move(cell);
       }
-    }
-    cells[i] = std::move(cell);
-  }
     });
   return cells;
 }

@@ -389,8 +389,7 @@ bool SurfaceTarget()
 int main(int argc, char* argv[])
 {
   const std::string what = argc > 1 ? argv[1] : "all";
-  if (what != "timing" && what != "targets" && what != "surface" && what != "cpu" &&
-    what != "all")
+  if (what != "timing" && what != "targets" && what != "surface" && what != "cpu" && what != "all")
   {
     std::fprintf(stderr, "usage: %s [timing|targets|surface|cpu|all]\n", argv[0]);
     return 2;

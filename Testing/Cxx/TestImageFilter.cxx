@@ -352,6 +352,7 @@ TEST(ImageFilter, EngineAndSolverOptionsReachTheEngine)
     filter->SetNumberOfSites(30);
     filter->SetMaximumNumberOfIterations(15);
     filter->SetTolerance(0.0);
+    filter->SetEngineToOpenGL(); // these are the GPU engine's options
     filter->SetSplitBoundaryPixels(split);
     filter->SetAdaptiveJumpFlooding(adaptive);
     filter->SetNumberOfCorrections(corrections);
@@ -524,6 +525,7 @@ TEST(ImageFilterBadInput, GridBeyondTheLargestTexture)
   vtkNew<vtkCVTImageFilter> filter;
   filter->SetInputData(MakeImage(40000, 1));
   filter->SetNumberOfSites(3);
+  filter->SetEngineToOpenGL();
   EXPECT_TRUE(Contains(RunExpectingError(filter), "largest texture"));
 }
 
@@ -533,6 +535,7 @@ TEST(ImageFilterBadInput, NoOpenGLContext)
   vtkNew<vtkCVTImageFilter> filter;
   filter->SetInputData(MakeImage(8, 8));
   filter->SetNumberOfSites(3);
+  filter->SetEngineToOpenGL(); // Auto would take the CPU (tested in cli-errors.sh)
   const std::string message = RunExpectingError(filter);
   unsetenv("CVT_OPENGL_CONTEXT");
   EXPECT_TRUE(Contains(message, "no OpenGL >= 3.2 context"));
@@ -547,4 +550,60 @@ TEST(ImageFilterBadInput, ThenAGoodRunStillWorks)
   filter->SetNumberOfSites(3);
   filter->Update();
   EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 3);
+}
+
+TEST(ImageFilter, CPUAndOpenGLEnginesAgree)
+{
+  // Same job, same seed: Lloyd on a graded density. The GPU's discretisation (1+JFA labels,
+  // split boundary pixels in float) makes the trajectories drift apart only slightly.
+  auto image = MakeImage(128, 128);
+  vtkNew<vtkFloatArray> density;
+  density->SetName("density");
+  for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
+  {
+    density->InsertNextValue(static_cast<float>(1.0 + 3.0 * image->GetPoint(p)[0] / 128.0));
+  }
+  image->GetPointData()->AddArray(density);
+  double energy[2] = { 0.0, 0.0 };
+  std::string reason[2];
+  for (int engine : { vtkCVTImageFilter::OPENGL, vtkCVTImageFilter::CPU })
+  {
+    vtkNew<vtkCVTImageFilter> filter;
+    filter->SetInputData(image);
+    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "density");
+    filter->SetEngine(engine);
+    filter->SetNumberOfSites(100);
+    filter->SetMethodToLloyd();
+    filter->SetMaximumNumberOfIterations(30);
+    filter->SetTolerance(0.0);
+    filter->ComputeExactEnergyOn();
+    filter->Update();
+    vtkFieldData* fields = filter->GetSitesOutput()->GetFieldData();
+    const int k = engine == vtkCVTImageFilter::CPU;
+    energy[k] = fields->GetArray("ExactEnergy")->GetTuple1(0);
+    reason[k] = fields->GetAbstractArray("Engine")->GetVariantValue(0).ToString();
+    if (k == 1)
+    {
+      // The CPU engine's energy is the exact one.
+      EXPECT_NEAR(fields->GetArray("EnergyRelativeDifference")->GetTuple1(0), 0.0, 1e-12);
+    }
+  }
+  EXPECT_EQ(reason[0], "OpenGL");
+  EXPECT_EQ(reason[1], "CPU");
+  EXPECT_NEAR(energy[1], energy[0], 2e-3 * energy[0]);
+
+  // Auto names its choice and why: the CPU exactly when OpenGL is a software renderer.
+  vtkNew<vtkCVTImageFilter> automatic;
+  automatic->SetInputData(image);
+  automatic->SetNumberOfSites(50);
+  automatic->SetMaximumNumberOfIterations(3);
+  automatic->Update();
+  vtkFieldData* fields = automatic->GetSitesOutput()->GetFieldData();
+  const std::string name = fields->GetAbstractArray("Engine")->GetVariantValue(0).ToString();
+  const std::string why = fields->GetAbstractArray("EngineReason")->GetVariantValue(0).ToString();
+  EXPECT_EQ(why.rfind("Auto: ", 0), 0u) << why;
+  EXPECT_EQ(name == "CPU",
+    why.find("software renderer") != std::string::npos ||
+      why.find("no OpenGL") != std::string::npos)
+    << name << ": " << why;
 }
