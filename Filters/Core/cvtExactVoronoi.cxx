@@ -248,20 +248,23 @@ size_t ClipVertical(
   return out;
 }
 
-/// Whether (x, y) is inside the counter-clockwise convex polygon.
-bool InsideConvex(const Polygon& polygon, double x, double y)
+/// The x extent of the convex polygon on the line at height y (which must meet it).
+void SpanAt(const Polygon& polygon, double y, double& left, double& right)
 {
+  left = std::numeric_limits<double>::infinity();
+  right = -left;
   const size_t n = polygon.Size();
   for (size_t k = 0; k < n; ++k)
   {
-    const double ex = polygon.X[(k + 1) % n] - polygon.X[k];
-    const double ey = polygon.Y[(k + 1) % n] - polygon.Y[k];
-    if (ex * (y - polygon.Y[k]) - ey * (x - polygon.X[k]) < 0.0)
+    const double xa = polygon.X[k], ya = polygon.Y[k];
+    const double xb = polygon.X[(k + 1) % n], yb = polygon.Y[(k + 1) % n];
+    if ((ya <= y && y <= yb) || (yb <= y && y <= ya))
     {
-      return false;
+      const double x = ya == yb ? xa : xa + (y - ya) / (yb - ya) * (xb - xa);
+      left = std::min({ left, x, ya == yb ? xb : x });
+      right = std::max({ right, x, ya == yb ? xb : x });
     }
   }
-  return true;
 }
 
 /// The integrals of one cell with a pixelwise-constant density: pixels wholly inside the cell
@@ -293,7 +296,8 @@ void DensityCellSums(const Grid& grid, const std::vector<float>& density,
     (grid.Spacing[0] * grid.Spacing[0] + grid.Spacing[1] * grid.Spacing[1]) / 12.0;
   // The site relative to the grid's origin, as the tables' pixel centres are.
   const double rx = sx - grid.Origin[0], ry = sy - grid.Origin[1];
-  const auto partial = [&](const Polygon& band, int px, int py)
+  const auto partial = [&](const double* bandX, const double* bandY, size_t bandSize, int px,
+                         int py)
   {
     const double rho = density[static_cast<size_t>(py) * grid.Width + px];
     if (rho == 0.0)
@@ -304,7 +308,7 @@ void DensityCellSums(const Grid& grid, const std::vector<float>& density,
     // pieces are most of the work when cells are a few pixels wide).
     const double x0 = grid.Origin[0] + px * grid.Spacing[0], x1 = x0 + grid.Spacing[0];
     double ax[SmallPolygonSize], ay[SmallPolygonSize], bx[SmallPolygonSize], by[SmallPolygonSize];
-    size_t n = ClipVertical(band.X.data(), band.Y.data(), band.Size(), x1, true, ax, ay);
+    size_t n = ClipVertical(bandX, bandY, bandSize, x1, true, ax, ay);
     n = ClipVertical(ax, ay, n, x0, false, bx, by);
     if (n < 3)
     {
@@ -316,32 +320,53 @@ void DensityCellSums(const Grid& grid, const std::vector<float>& density,
     sums[2] += rho * r.MomentY;
     sums[3] += rho * r.SecondMoment;
   };
+  double clippedX[SmallPolygonSize], clippedY[SmallPolygonSize];
+  double bandX[SmallPolygonSize], bandY[SmallPolygonSize];
   for (int py = row(ymin); py <= row(ymax); ++py)
   {
     const double y0 = grid.Origin[1] + py * grid.Spacing[1], y1 = y0 + grid.Spacing[1];
-    const Polygon band = ClipPolygon(ClipPolygon(cell, 0.0, 1.0, y1), 0.0, -1.0, -y0);
-    if (band.Size() < 3)
+    // The cell within the row's strip y0 <= y <= y1 (ClipVertical with the axes swapped).
+    size_t n = ClipVertical(cell.Y.data(), cell.X.data(), cell.Size(), y1, true, clippedY, clippedX);
+    n = ClipVertical(clippedY, clippedX, n, y0, false, bandY, bandX);
+    if (n < 3)
     {
       continue;
     }
-    const auto full = [&](int px)
+    double bandMin = bandX[0], bandMax = bandX[0];
+    for (size_t k = 1; k < n; ++k)
     {
-      const double x0 = grid.Origin[0] + px * grid.Spacing[0], x1 = x0 + grid.Spacing[0];
-      return InsideConvex(cell, x0, y0) && InsideConvex(cell, x1, y0) &&
-        InsideConvex(cell, x1, y1) && InsideConvex(cell, x0, y1);
-    };
-    int first = column(xmin), last = column(xmax);
-    while (first <= last && !full(first))
-    {
-      partial(band, first++, py);
+      bandMin = std::min(bandMin, bandX[k]);
+      bandMax = std::max(bandMax, bandX[k]);
     }
-    while (last >= first && !full(last))
+    const int left = column(bandMin), right = column(bandMax);
+    // Whole pixels: the cell is convex, so its left border is furthest right, and its right
+    // border furthest left, at the strip's top or bottom.
+    int first = right + 1, last = right;
+    if (y0 >= ymin && y1 <= ymax)
     {
-      partial(band, last--, py);
+      double l0, r0, l1, r1;
+      SpanAt(cell, y0, l0, r0);
+      SpanAt(cell, y1, l1, r1);
+      const double from = (std::max(l0, l1) - grid.Origin[0]) / grid.Spacing[0];
+      const double to = (std::min(r0, r1) - grid.Origin[0]) / grid.Spacing[0];
+      first = std::max(left, static_cast<int>(std::ceil(from)));
+      last = std::min(right, static_cast<int>(std::floor(to)) - 1);
     }
     if (first > last)
     {
+      for (int px = left; px <= right; ++px)
+      {
+        partial(bandX, bandY, n, px, py);
+      }
       continue;
+    }
+    for (int px = left; px < first; ++px)
+    {
+      partial(bandX, bandY, n, px, py);
+    }
+    for (int px = last + 1; px <= right; ++px)
+    {
+      partial(bandX, bandY, n, px, py);
     }
     // Pixels first..last are wholly inside: rho A, rho A (c - s), rho A (|c - s|^2 + inertia).
     const size_t k0 = py * tables.Stride + first, k1 = py * tables.Stride + last + 1;
