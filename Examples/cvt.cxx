@@ -866,6 +866,9 @@ int RunSurface(const Options& options)
   vtkNew<vtkCVTSurfaceFilter> cvt;
   cvt->SetInputConnection(geometryImage->GetOutputPort());
   SetOptimizer(options, cvt.Get());
+  cvt->SetEngine(options.Engine == "opengl" ? vtkCVTSurfaceFilter::OPENGL
+      : options.Engine == "cpu"             ? vtkCVTSurfaceFilter::CPU
+                                            : vtkCVTSurfaceFilter::AUTO);
   Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTSurfaceFilter*>(f)->GetSitesOutput(); });
 
   const std::string dir = OutputFolder(options);
@@ -885,7 +888,7 @@ int RunSurface(const Options& options)
               << "  method                      " << options.Method << "\n"
               << "  iterations / evaluations    " << Field(sites, "Iterations") << " / "
               << Field(sites, "Evaluations") << "\n"
-              << "  energy F (GPU)              " << Field(sites, "Energy") << "\n"
+              << "  energy F                    " << Field(sites, "Energy") << "\n"
               << "  |grad F| (tangential)       " << Field(sites, "GradientNorm") << "\n"
               << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
               << "  area weights min / max      " << Field(sites, "MinimumAreaWeight") << " / "

@@ -4,9 +4,12 @@
 #include "cvtQuality.h"
 #include "cvtSurface.h"
 #include "cvtSurfaceOptimizer.h"
+#include "vtkCVTEngineChoice.h"
 #include "vtkCVTOutputHelpers.h"
+#include "vtkCVTRemeshFilter.h"
 #include "vtkCVTSurfaceEngine.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -25,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkCVTSurfaceFilter);
@@ -209,6 +213,19 @@ int vtkCVTSurfaceFilter::RequestData(
       << " of a cell; use a finer resolution.");
   }
 
+  const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
+  if (!choice.UseOpenGL)
+  {
+    if (!this->RunOnCPU(input, image, choice.Reason, outputVector))
+    {
+      return 0;
+    }
+    vtkFieldData* cpuFields = sitesOut->GetFieldData();
+    cvtvtk::AddFieldValue(cpuFields, "MinimumAreaWeight", minimumWeight);
+    cvtvtk::AddFieldValue(cpuFields, "MaximumAreaWeight", maximumWeight);
+    return 1;
+  }
+
   // --- Sites and the optimiser on the GPU engine.
   std::vector<long long> pixels;
   const std::vector<double> sites = cvt::SampleSurfaceSites(
@@ -266,8 +283,7 @@ int vtkCVTSurfaceFilter::RequestData(
   cvtvtk::AddFieldValue(fields, "SurfaceArea", area);
   cvtvtk::AddFieldString(fields, "StopReason", result.StopReason);
   cvtvtk::AddFieldString(fields, "Engine", "OpenGL");
-  cvtvtk::AddFieldString(fields, "EngineReason",
-    "geometry images run on the GPU engine (CVT Remesh: any mesh on the CPU)");
+  cvtvtk::AddFieldString(fields, "EngineReason", choice.Reason);
 
   labelsOut->ShallowCopy(input);
   vtkNew<vtkIntArray> labels;
@@ -314,6 +330,117 @@ int vtkCVTSurfaceFilter::RequestData(
 }
 
 //------------------------------------------------------------------------------
+int vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image,
+  const std::string& reason, vtkInformationVector* outputVector)
+{
+  // About 60 triangles per site: the restricted cells are exact on the triangles, which differ
+  // from the surface by their chords only.
+  long long valid = 0;
+  for (long long p = 0; p < image.NumberOfPixels(); ++p)
+  {
+    valid += image.IsValid(p) ? 1 : 0;
+  }
+  const double wanted = std::max(20000.0, 60.0 * this->NumberOfSites);
+  const int stride = std::max(1, static_cast<int>(std::floor(std::sqrt(2.0 * valid / wanted))));
+  std::vector<double> coordinates;
+  std::vector<std::array<int, 3>> triangles;
+  cvt::GeometryImageMesh(image, stride, coordinates, triangles);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(coordinates.size() / 3));
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+  {
+    points->SetPoint(p, &coordinates[3 * p]);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+
+  vtkNew<vtkCVTRemeshFilter> remesher;
+  remesher->SetInputData(mesh);
+  remesher->SetNumberOfSites(this->NumberOfSites);
+  remesher->SetRandomSeed(this->RandomSeed);
+  remesher->SetMethod(this->Method);
+  remesher->SetMaximumNumberOfIterations(this->MaximumNumberOfIterations);
+  remesher->SetTolerance(this->Tolerance);
+  remesher->SetGradientTolerance(this->GradientTolerance);
+  remesher->SetNumberOfCorrections(this->NumberOfCorrections);
+  // Its errors become ours; its progress is ours, and our abort stops it.
+  struct Relay
+  {
+    vtkCVTSurfaceFilter* Self;
+    vtkCVTRemeshFilter* Inner;
+    std::string Error;
+  } relay{ this, remesher, std::string() };
+  vtkNew<vtkCallbackCommand> onProgress, onError, onWarning;
+  onProgress->SetClientData(&relay);
+  onProgress->SetCallback(
+    [](vtkObject*, unsigned long, void* client, void* data)
+    {
+      auto* r = static_cast<Relay*>(client);
+      r->Self->UpdateProgress(*static_cast<double*>(data));
+      if (r->Self->GetAbortExecute())
+      {
+        r->Inner->SetAbortExecute(1);
+      }
+    });
+  onError->SetClientData(&relay);
+  onError->SetCallback(
+    [](vtkObject*, unsigned long, void* client, void* data)
+    {
+      const std::string text = static_cast<const char*>(data);
+      const size_t header = text.find("): ");
+      static_cast<Relay*>(client)->Error =
+        header == std::string::npos ? text : text.substr(header + 3);
+    });
+  // Its warnings (the merged points of a sphere's poles) say nothing about the user's input.
+  onWarning->SetCallback([](vtkObject*, unsigned long, void*, void*) {});
+  remesher->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  remesher->AddObserver(vtkCommand::ErrorEvent, onError);
+  remesher->AddObserver(vtkCommand::WarningEvent, onWarning);
+  remesher->Update();
+  if (remesher->GetSitesOutput()->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("The CPU surface CVT failed: " << relay.Error);
+    return 0;
+  }
+  vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
+  sitesOut->ShallowCopy(remesher->GetSitesOutput());
+  vtkPolyData::GetData(outputVector, RemeshPort)->ShallowCopy(remesher->GetRemeshOutput());
+  vtkTable::GetData(outputVector, HistoryPort)->ShallowCopy(remesher->GetHistoryOutput());
+  std::ostringstream why;
+  why << reason << "; the geometry image as " << triangles.size() << " triangles (every " << stride
+      << " pixels), exact restricted Voronoi cells";
+  vtkFieldData* fields = sitesOut->GetFieldData();
+  fields->RemoveArray("EngineReason");
+  cvtvtk::AddFieldString(fields, "EngineReason", why.str());
+
+  vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
+  labelsOut->ShallowCopy(input);
+  std::vector<double> sites(3 * static_cast<size_t>(sitesOut->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < sitesOut->GetNumberOfPoints(); ++i)
+  {
+    sitesOut->GetPoint(i, &sites[3 * i]);
+  }
+  const std::vector<int> labels = cvt::NearestSiteLabels(image, sites);
+  vtkNew<vtkIntArray> labelArray;
+  labelArray->SetName("SiteId");
+  labelArray->SetNumberOfValues(static_cast<vtkIdType>(labels.size()));
+  for (size_t p = 0; p < labels.size(); ++p)
+  {
+    labelArray->SetValue(static_cast<vtkIdType>(p), labels[p]);
+  }
+  labelsOut->GetPointData()->AddArray(labelArray);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkCVTSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -324,4 +451,5 @@ void vtkCVTSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
   os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
+  os << indent << "Engine: " << cvtvtk::EngineKindName(this->Engine) << "\n";
 }

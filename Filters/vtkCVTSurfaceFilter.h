@@ -74,6 +74,25 @@ public:
   vtkSetClampMacro(NumberOfCorrections, int, 1, 100);
   vtkGetMacro(NumberOfCorrections, int);
 
+  /**
+   * The engine: AUTO (default: OpenGL on a hardware GPU, else the CPU), OPENGL (the geometry
+   * image on the GPU, as above) or CPU: the geometry image triangulated (at most about 60
+   * triangles per site) and remeshed by vtkCVTRemeshFilter's exact restricted Voronoi engine;
+   * the labels are then each pixel's nearest site. Choice and reason: field data Engine and
+   * EngineReason of the sites.
+   */
+  enum Engines
+  {
+    AUTO = 0,
+    OPENGL = 1,
+    CPU = 2
+  };
+  vtkSetClampMacro(Engine, int, AUTO, CPU);
+  vtkGetMacro(Engine, int);
+  void SetEngineToAuto() { this->SetEngine(AUTO); }
+  void SetEngineToOpenGL() { this->SetEngine(OPENGL); }
+  void SetEngineToCPU() { this->SetEngine(CPU); }
+
   vtkPolyData* GetSitesOutput();
   vtkImageData* GetLabelsOutput();
   vtkPolyData* GetRemeshOutput();
@@ -105,7 +124,12 @@ protected:
   double Tolerance = 1e-6;
   double GradientTolerance = 0.0;
   int NumberOfCorrections = 7;
+  int Engine = AUTO;
   std::string ContextDescription;
+
+  /** The CPU engine's run: the geometry image as a mesh through vtkCVTRemeshFilter. */
+  int RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image, const std::string& reason,
+    vtkInformationVector* outputVector);
 
 private:
   vtkCVTSurfaceFilter(const vtkCVTSurfaceFilter&) = delete;

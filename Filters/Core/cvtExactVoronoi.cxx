@@ -296,8 +296,8 @@ void DensityCellSums(const Grid& grid, const std::vector<float>& density,
     (grid.Spacing[0] * grid.Spacing[0] + grid.Spacing[1] * grid.Spacing[1]) / 12.0;
   // The site relative to the grid's origin, as the tables' pixel centres are.
   const double rx = sx - grid.Origin[0], ry = sy - grid.Origin[1];
-  const auto partial = [&](const double* bandX, const double* bandY, size_t bandSize, int px,
-                         int py)
+  const auto partial = [&](
+                         const double* bandX, const double* bandY, size_t bandSize, int px, int py)
   {
     const double rho = density[static_cast<size_t>(py) * grid.Width + px];
     if (rho == 0.0)
@@ -326,7 +326,8 @@ void DensityCellSums(const Grid& grid, const std::vector<float>& density,
   {
     const double y0 = grid.Origin[1] + py * grid.Spacing[1], y1 = y0 + grid.Spacing[1];
     // The cell within the row's strip y0 <= y <= y1 (ClipVertical with the axes swapped).
-    size_t n = ClipVertical(cell.Y.data(), cell.X.data(), cell.Size(), y1, true, clippedY, clippedX);
+    size_t n =
+      ClipVertical(cell.Y.data(), cell.X.data(), cell.Size(), y1, true, clippedY, clippedX);
     n = ClipVertical(clippedY, clippedX, n, y0, false, bandY, bandX);
     if (n < 3)
     {

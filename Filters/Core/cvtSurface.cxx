@@ -2,6 +2,12 @@
 
 #include "cvtSampling.h"
 
+#include "vtkSMPTools.h"
+
+#include <nanoflann.hpp>
+
+#include <cstdint>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -345,6 +351,111 @@ std::vector<std::array<int, 3>> DualTriangles(
     }
   }
   return triangles;
+}
+
+void GeometryImageMesh(const GeometryImage& image, int stride, std::vector<double>& points,
+  std::vector<std::array<int, 3>>& triangles)
+{
+  stride = std::max(1, stride);
+  // The sampled columns and rows; the last one too when the border is not identified.
+  const auto samples = [stride](int size, bool wrap)
+  {
+    std::vector<int> at;
+    for (int k = 0; k < size; k += stride)
+    {
+      at.push_back(k);
+    }
+    if (!wrap && at.back() != size - 1)
+    {
+      at.push_back(size - 1);
+    }
+    return at;
+  };
+  const std::vector<int> columns = samples(image.Width, image.WrapU);
+  const std::vector<int> rows = samples(image.Height, image.WrapV);
+  const int nu = static_cast<int>(columns.size()), nv = static_cast<int>(rows.size());
+  std::vector<int> index(static_cast<size_t>(nu) * nv, -1);
+  points.clear();
+  triangles.clear();
+  for (int b = 0; b < nv; ++b)
+  {
+    for (int a = 0; a < nu; ++a)
+    {
+      const long long p = static_cast<long long>(rows[b]) * image.Width + columns[a];
+      if (image.IsValid(p))
+      {
+        index[static_cast<size_t>(b) * nu + a] = static_cast<int>(points.size() / 3);
+        points.insert(points.end(), &image.Position[3 * p], &image.Position[3 * p] + 3);
+      }
+    }
+  }
+  const int quadsU = image.WrapU ? nu : nu - 1, quadsV = image.WrapV ? nv : nv - 1;
+  for (int b = 0; b < quadsV; ++b)
+  {
+    for (int a = 0; a < quadsU; ++a)
+    {
+      const int a1 = (a + 1) % nu, b1 = (b + 1) % nv;
+      const int p00 = index[static_cast<size_t>(b) * nu + a];
+      const int p10 = index[static_cast<size_t>(b) * nu + a1];
+      const int p11 = index[static_cast<size_t>(b1) * nu + a1];
+      const int p01 = index[static_cast<size_t>(b1) * nu + a];
+      if (p00 >= 0 && p10 >= 0 && p11 >= 0)
+      {
+        triangles.push_back({ p00, p10, p11 });
+      }
+      if (p00 >= 0 && p11 >= 0 && p01 >= 0)
+      {
+        triangles.push_back({ p00, p11, p01 });
+      }
+    }
+  }
+}
+
+namespace
+{
+struct SiteCloud3D
+{
+  const std::vector<double>* Sites = nullptr;
+  size_t kdtree_get_point_count() const { return this->Sites->size() / 3; }
+  double kdtree_get_pt(size_t i, size_t d) const { return (*this->Sites)[3 * i + d]; }
+  template<class Box>
+  bool kdtree_get_bbox(Box&) const
+  {
+    return false;
+  }
+};
+}
+
+std::vector<int> NearestSiteLabels(const GeometryImage& image, const std::vector<double>& sites)
+{
+  std::vector<int> labels(static_cast<size_t>(image.NumberOfPixels()), -1);
+  if (sites.size() < 3)
+  {
+    return labels;
+  }
+  SiteCloud3D cloud;
+  cloud.Sites = &sites;
+  const nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SiteCloud3D>,
+    SiteCloud3D, 3, std::uint32_t>
+    tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  vtkSMPTools::For(0, image.NumberOfPixels(), 4096,
+    [&](long long first, long long last)
+    {
+      for (long long p = first; p < last; ++p)
+      {
+        if (!image.IsValid(p))
+        {
+          continue;
+        }
+        const double x[3] = { image.Position[3 * p], image.Position[3 * p + 1],
+          image.Position[3 * p + 2] };
+        std::uint32_t id = 0;
+        double d2 = 0.0;
+        tree.knnSearch(x, 1, &id, &d2);
+        labels[p] = static_cast<int>(id);
+      }
+    });
+  return labels;
 }
 
 } // namespace cvt

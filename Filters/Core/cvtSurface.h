@@ -56,6 +56,17 @@ CVTCORE_EXPORT void NearestPointsInCells(const GeometryImage& image, const std::
 CVTCORE_EXPORT std::vector<std::array<int, 3>> DualTriangles(
   const GeometryImage& image, const std::vector<int>& labels, const std::vector<double>& sites);
 
+/// The geometry image as a triangle mesh, every `stride`-th pixel a point (the last row and
+/// column kept where borders are not identified), each quad split along its (i, j)-(i+1, j+1)
+/// diagonal as the image's own triangulation, identified borders joined, masked pixels left
+/// out. Points repeated by the image (a sphere's poles) are left for the caller to merge.
+CVTCORE_EXPORT void GeometryImageMesh(const GeometryImage& image, int stride,
+  std::vector<double>& points, std::vector<std::array<int, 3>>& triangles);
+
+/// The nearest site (3D distance, k-d tree, in parallel) of every valid pixel; -1 elsewhere.
+CVTCORE_EXPORT std::vector<int> NearestSiteLabels(
+  const GeometryImage& image, const std::vector<double>& sites);
+
 /// What a surface engine must do: the 3D counterpart of cvt::Engine. Sites are flat
 /// (x, y, z, ...) points on the surface, each with the pixel that holds it.
 class CVTCORE_EXPORT SurfaceEngine : public EngineErrors
