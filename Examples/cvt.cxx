@@ -43,7 +43,9 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -51,6 +53,8 @@
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -341,6 +345,37 @@ std::string Extension(const std::string& path)
   return ext;
 }
 
+/// Some of VTK's readers crash or abort on corrupt files (PNG through libpng's error path,
+/// binary legacy VTK and PLY, binary STL with a wrong triangle count). So the file is read once
+/// in a child process first: a signal there, or no end within a minute, becomes a clear error
+/// here instead of a crash or a hang.
+void ProbeReader(vtkAlgorithm* reader, const std::string& path)
+{
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    alarm(60);
+    reader->Update();
+    std::_Exit(0);
+  }
+  if (child < 0)
+  {
+    return; // no probe possible: read as usual
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  if (WIFSIGNALED(status))
+  {
+    Fail("cannot read --input '" + path + "': the file is corrupt or truncated (" +
+      (WTERMSIG(status) == SIGALRM
+          ? std::string("reading it did not end within a minute")
+          : std::string("the reader crashed on it: ") + strsignal(WTERMSIG(status))) +
+      ")");
+  }
+}
+
 /// Reads the density image and leaves a one-component float array "density" as its scalars.
 vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
 {
@@ -393,6 +428,7 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
   {
     Fail("--input '" + options.Input + "' has an unknown type; use .png .jpg .vti .mha");
   }
+  ProbeReader(reader, options.Input);
   reader->Update();
   vtkImageData* read = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!read || read->GetNumberOfPoints() == 0)
@@ -527,6 +563,15 @@ public:
     while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
     {
       text.pop_back();
+    }
+    // Readers quote corrupt files' bytes: keep the terminal sane.
+    for (char& ch : text)
+    {
+      if ((static_cast<unsigned char>(ch) < 32 && ch != '\n') ||
+        static_cast<unsigned char>(ch) > 126)
+      {
+        ch = '?';
+      }
     }
     if (event == vtkCommand::WarningEvent)
     {
@@ -757,8 +802,10 @@ vtkSmartPointer<vtkAlgorithm> SurfaceGeometryImage(const Options& options)
     source->SetResolution(options.GIResolution[0], options.GIResolution[1]);
     return source;
   }
+  vtkSmartPointer<vtkAlgorithm> reader = MeshReader(options);
+  ProbeReader(reader, options.Input);
   vtkNew<vtkCleanPolyData> merge;
-  merge->SetInputConnection(MeshReader(options)->GetOutputPort());
+  merge->SetInputConnection(reader->GetOutputPort());
   auto parameterise = vtkSmartPointer<vtkCVTMeshGeometryImage>::New();
   parameterise->SetInputConnection(merge->GetOutputPort());
   parameterise->SetResolution(options.GIResolution[0], options.GIResolution[1]);
@@ -773,6 +820,7 @@ int RunRemesh(const Options& options)
   { return std::chrono::duration<double>(Clock::now() - from).count(); };
   const Clock::time_point start = Clock::now();
   vtkSmartPointer<vtkAlgorithm> reader = MeshReader(options);
+  ProbeReader(reader, options.Input);
   vtkNew<ErrorObserver> readErrors;
   reader->AddObserver(vtkCommand::ErrorEvent, readErrors);
   reader->Update();
@@ -932,5 +980,16 @@ int main(int argc, char* argv[])
   // without VTK's pipeline dumps.
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  return options.Command == "surface" ? RunSurface(options) : RunImage(options);
+  try
+  {
+    return options.Command == "surface" ? RunSurface(options) : RunImage(options);
+  }
+  catch (const std::bad_alloc&)
+  {
+    Fail("out of memory: the input is too large for this machine, or corrupt");
+  }
+  catch (const std::exception& failure)
+  {
+    Fail(failure.what());
+  }
 }

@@ -154,6 +154,23 @@ int vtkCVTRemeshFilter::RequestData(
     vtkErrorMacro("The input has no polygons (only points or lines); give a surface mesh.");
     return 0;
   }
+  // Corrupt files can name points that do not exist; VTK's cleaning would crash on them.
+  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  {
+    vtkDataArray* ids = cells ? cells->GetConnectivityArray() : nullptr;
+    if (!cells || cells->GetNumberOfCells() == 0)
+    {
+      continue;
+    }
+    double range[2];
+    ids->GetRange(range, 0);
+    if (!cells->IsValid() || range[0] < 0 || range[1] >= input->GetNumberOfPoints())
+    {
+      vtkErrorMacro("The input's polygons are corrupt: they name points outside 0.."
+        << input->GetNumberOfPoints() - 1 << " (a damaged file?).");
+      return 0;
+    }
+  }
   vtkSmartPointer<vtkPolyData> triangles = Triangulate(input);
   cvt::SurfaceMesh mesh;
   mesh.Points.resize(3 * static_cast<size_t>(triangles->GetNumberOfPoints()));

@@ -40,7 +40,7 @@ expect_error "mask leaves" surface --gi-resolution 4 4 --sites 100
 expect_error "between 0 and 1" image --gradient-tolerance 2
 # A closed mesh (a torus remesh) is not a disk for the one-chart OpenGL path; points alone are
 # not a surface for either engine.
-env -u DISPLAY "$CVT" surface --gi-resolution 64 32 --sites 40 --iterations 2 --output "$T/torus" --quiet
+env -u DISPLAY "$CVT" surface --engine opengl --gi-resolution 64 32 --sites 40 --iterations 2 --output "$T/torus" --quiet
 expect_error "closed" surface --engine opengl --input "$T/torus/remesh.vtp" --gi-resolution 32 32
 expect_error "no triangles" surface --engine opengl --input "$T/torus/sites.vtp" --gi-resolution 32 32
 expect_error "no polygons (only points or lines)" surface --input "$T/torus/sites.vtp"
