@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# One X server (Xvfb) for every test that needs X, as a CTest fixture:
+#   xvfb.sh start STATE_DIR        the setup test: start Xvfb on a free display and wait until it
+#                                  accepts connections (three tries, each up to 15 s)
+#   xvfb.sh run STATE_DIR CMD...   run CMD with DISPLAY set, once the server answers
+#   xvfb.sh stop STATE_DIR         the cleanup test
+# A test never gets a display that is still starting, or one another run is shutting down.
+set -u
+action=${1:?usage: xvfb.sh start|run|stop STATE_DIR [CMD...]}
+state=${2:?usage: xvfb.sh start|run|stop STATE_DIR [CMD...]}
+shift 2
+
+answers() { # answers DISPLAY: whether an X client can open it (libX11 through Python)
+  /usr/bin/python3 -c '
+import ctypes, sys
+x = ctypes.cdll.LoadLibrary("libX11.so.6")
+x.XOpenDisplay.restype = ctypes.c_void_p
+d = x.XOpenDisplay(sys.argv[1].encode())
+if d:
+    x.XCloseDisplay(ctypes.c_void_p(d))
+sys.exit(0 if d else 1)' "$1" 2>/dev/null
+}
+
+case $action in
+start)
+  mkdir -p "$state"
+  for attempt in 1 2 3; do
+    n=""
+    for candidate in $(seq 90 199); do
+      if [ ! -e "/tmp/.X$candidate-lock" ] && [ ! -e "/tmp/.X11-unix/X$candidate" ]; then
+        n=$candidate; break
+      fi
+    done
+    [ -n "$n" ] || { echo "no free X display number in 90..199"; exit 1; }
+    # Detached, its output in a file: CTest must not wait for the server to end.
+    setsid Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp < /dev/null > "$state/xvfb.log" 2>&1 &
+    pid=$!
+    for _ in $(seq 1 150); do
+      if answers ":$n"; then
+        echo "$n" > "$state/display"
+        echo "$pid" > "$state/pid"
+        echo "Xvfb :$n ready (attempt $attempt)"
+        exit 0
+      fi
+      kill -0 "$pid" 2> /dev/null || break
+      sleep 0.1
+    done
+    kill "$pid" 2> /dev/null
+    echo "Xvfb :$n did not accept connections (attempt $attempt):"
+    tail -n 3 "$state/xvfb.log"
+  done
+  echo "Xvfb never came up after 3 attempts"
+  exit 1
+  ;;
+run)
+  if [ ! -f "$state/display" ]; then
+    echo "no X server: the xvfb-start test (fixture xvfb) did not run or failed"
+    exit 1
+  fi
+  export DISPLAY=":$(cat "$state/display")"
+  if ! answers "$DISPLAY"; then
+    echo "the X server $DISPLAY no longer accepts connections; see $state/xvfb.log"
+    exit 1
+  fi
+  exec "$@"
+  ;;
+stop)
+  if [ -f "$state/pid" ]; then
+    kill "$(cat "$state/pid")" 2> /dev/null
+  fi
+  rm -f "$state/display" "$state/pid"
+  echo "Xvfb stopped"
+  ;;
+*)
+  echo "usage: xvfb.sh start|run|stop STATE_DIR [CMD...]"
+  exit 2
+  ;;
+esac
