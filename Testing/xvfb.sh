@@ -2,7 +2,8 @@
 # One X server (Xvfb) for every test that needs X, as a CTest fixture:
 #   xvfb.sh start STATE_DIR        the setup test: start Xvfb on a free display and wait until it
 #                                  accepts connections (three tries, each up to 15 s)
-#   xvfb.sh run STATE_DIR CMD...   run CMD with DISPLAY set, once the server answers
+#   xvfb.sh run STATE_DIR CMD...   run CMD with DISPLAY set, once the server answers (again,
+#                                  up to three times, when the server refused its connection)
 #   xvfb.sh stop STATE_DIR         the cleanup test
 # A test never gets a display that is still starting, or one another run is shutting down.
 set -u
@@ -58,11 +59,38 @@ run)
     exit 1
   fi
   export DISPLAY=":$(cat "$state/display")"
-  if ! answers "$DISPLAY"; then
-    echo "the X server $DISPLAY no longer accepts connections; see $state/xvfb.log"
-    exit 1
-  fi
-  exec "$@"
+  # Xvfb now and then refuses one of several clients connecting at once ("bad X server
+  # connection" from VTK, before any of our code runs): that start alone is tried again, up to
+  # three times; any other failure is the test's own.
+  for attempt in 1 2 3; do
+    # The server refuses a connection now and then while it is busy: wait up to 10 s for it.
+    ready=0
+    for _ in $(seq 1 40); do
+      if answers "$DISPLAY"; then
+        ready=1
+        break
+      fi
+      sleep 0.25
+    done
+    if [ "$ready" -eq 0 ]; then
+      echo "xvfb.sh: the X server $DISPLAY no longer accepts connections; see $state/xvfb.log"
+      exit 1
+    fi
+    log=$(mktemp)
+    "$@" 2>&1 | tee "$log"
+    status=${PIPESTATUS[0]}
+    refused=0
+    grep -q "bad X server connection" "$log" && refused=1
+    rm -f "$log"
+    if [ "$status" -ne 0 ] && [ "$refused" -eq 1 ] && [ "$attempt" -lt 3 ]; then
+      echo "xvfb.sh: the X server refused the connection (attempt $attempt of 3); starting again"
+      sleep 1
+      continue
+    fi
+    [ "$refused" -eq 1 ] && [ "$status" -ne 0 ] &&
+      echo "xvfb.sh: the X server refused the connection three times"
+    exit "$status"
+  done
   ;;
 stop)
   if [ -f "$state/pid" ]; then
