@@ -50,6 +50,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -637,8 +638,12 @@ void WriteCsv(vtkPolyData* sites, vtkTable* history, int dimensions, const std::
   }
 }
 
+/// Whether cvt.png was written (the summary lists only the files that were).
+bool PictureWritten = false;
+
 void WritePicture(vtkImageData* picture, const std::string& error, const std::string& path)
 {
+  PictureWritten = picture != nullptr;
   if (!picture)
   {
     // The results are written; only the picture needs OpenGL (the CPU engine does not).
@@ -673,7 +678,10 @@ void PrintSummary(
     << sites->GetFieldData()->GetAbstractArray("Engine")->GetVariantValue(0).ToString() << " ("
     << sites->GetFieldData()->GetAbstractArray("EngineReason")->GetVariantValue(0).ToString() << ")"
     << (context.empty() ? "" : "; OpenGL: " + context) << "\n"
-    << "  wrote " << files << " in " << options.Output << "\n";
+    << "  wrote "
+    << (PictureWritten ? std::string(files)
+                       : std::regex_replace(files, std::regex(" cvt\\.png"), ""))
+    << " in " << options.Output << "\n";
 }
 
 template<typename Filter>
