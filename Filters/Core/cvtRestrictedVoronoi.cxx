@@ -130,9 +130,19 @@ struct RestrictedVoronoi::Internals
 
   void LabelPoints();
   void Sweep(bool dual);
+  /// Per thread: more neighbours when the stored ones do not suffice, and the cells queued for
+  /// one triangle (a large triangle, as in CAD models, can meet thousands of cells).
+  struct Scratch
+  {
+    std::vector<std::uint32_t> Ids;
+    std::vector<double> D2;
+    std::vector<int> Queue;
+    std::vector<int> Stamp; // per site: the mark of the last triangle that queued it
+    int Mark = 0;
+  };
   void ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
     std::vector<std::array<int, 3>>& triples, std::vector<SiteContact>& contacts,
-    std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const;
+    Scratch& scratch) const;
   bool ClipToCell(int t, int site, Polygon& polygon, std::vector<std::uint32_t>& scratchIds,
     std::vector<double>& scratchD2) const;
   void Integrate(int t, const double* s, const Polygon& polygon, Piece& piece) const;
@@ -494,7 +504,7 @@ void RestrictedVoronoi::Internals::Contact(
 //------------------------------------------------------------------------------
 void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
   std::vector<std::array<int, 3>>& triples, std::vector<SiteContact>& contacts,
-  std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const
+  Scratch& scratch) const
 {
   const auto& tri = this->Mesh.Triangles[t];
   const int l0 = this->PointLabels[tri[0]], l1 = this->PointLabels[tri[1]],
@@ -524,19 +534,31 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
     return;
   }
   // Breadth-first over the cells that reach the triangle, from its corners' sites.
-  int queue[MaximumPolygonSize];
-  int queued = 0;
+  const size_t siteCount = this->Sites.size() / 3;
+  if (scratch.Stamp.size() != siteCount)
+  {
+    scratch.Stamp.assign(siteCount, 0);
+    scratch.Mark = 0;
+  }
+  ++scratch.Mark;
+  std::vector<int>& queue = scratch.Queue;
+  queue.clear();
+  const auto enqueue = [&scratch, &queue](int site)
+  {
+    if (scratch.Stamp[site] != scratch.Mark)
+    {
+      scratch.Stamp[site] = scratch.Mark;
+      queue.push_back(site);
+    }
+  };
   for (int label : { l0, l1, l2 })
   {
-    if (std::find(queue, queue + queued, label) == queue + queued)
-    {
-      queue[queued++] = label;
-    }
+    enqueue(label);
   }
-  for (int next = 0; next < queued; ++next)
+  for (size_t next = 0; next < queue.size(); ++next)
   {
     const int site = queue[next];
-    if (!this->ClipToCell(t, site, polygon, scratchIds, scratchD2))
+    if (!this->ClipToCell(t, site, polygon, scratch.Ids, scratch.D2))
     {
       continue;
     }
@@ -546,10 +568,9 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
     for (int v = 0; v < polygon.Size; ++v)
     {
       const int label = polygon.V[v].Label;
-      if (label >= 0 && queued < MaximumPolygonSize &&
-        std::find(queue, queue + queued, label) == queue + queued)
+      if (label >= 0)
       {
-        queue[queued++] = label;
+        enqueue(label);
       }
       const int before = polygon.V[(v + polygon.Size - 1) % polygon.Size].Label;
       if (dual && label >= 0 && before >= 0)
@@ -629,8 +650,7 @@ void RestrictedVoronoi::Internals::Sweep(bool dual)
   vtkSMPTools::For(0, this->BlockCount, 1,
     [&](int first, int last)
     {
-      std::vector<std::uint32_t> scratchIds;
-      std::vector<double> scratchD2;
+      Scratch scratch;
       for (int block = first; block < last; ++block)
       {
         std::vector<Piece>& pieces = this->BlockPieces[block];
@@ -642,7 +662,7 @@ void RestrictedVoronoi::Internals::Sweep(bool dual)
         const int end = std::min(triangleCount, (block + 1) * blockSize);
         for (int t = block * blockSize; t < end; ++t)
         {
-          this->ProcessTriangle(t, dual, pieces, triples, contacts, scratchIds, scratchD2);
+          this->ProcessTriangle(t, dual, pieces, triples, contacts, scratch);
         }
       }
     });

@@ -197,6 +197,37 @@ TEST(RestrictedVoronoi, FlatMeshMatchesExactVoronoiPolygons)
   }
 }
 
+TEST(RestrictedVoronoi, LargeTrianglesMeetManyCells)
+{
+  // Two triangles for the whole square (CAD models have such faces), 400 sites: each triangle
+  // meets hundreds of cells, and still the integrals are the exact 2D ones.
+  const cvt::SurfaceMesh mesh = FlatSquare(1, -1.0, 1.0);
+  const cvt::Grid grid = cvt::Grid::Square(64, -1.0, 1.0);
+  const std::vector<double> sites2D = cvt::SampleSites(grid, {}, 400, 8);
+  std::vector<double> sites;
+  for (size_t i = 0; i < sites2D.size() / 2; ++i)
+  {
+    sites.insert(sites.end(), { sites2D[2 * i], sites2D[2 * i + 1], 0.0 });
+  }
+  cvt::RestrictedVoronoi engine;
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine.SetMesh(mesh) && engine.SetSites(sites) && engine.ComputeCellSums(sums));
+  const cvt::CellSums exact = cvt::ExactCellSums(grid, sites2D, {});
+  for (size_t i = 0; i < exact.Size(); ++i)
+  {
+    ASSERT_NEAR(sums.Mass[i], exact.Mass[i], 1e-12) << "site " << i;
+    ASSERT_NEAR(sums.Energy[i], exact.Energy[i], 1e-12) << "site " << i;
+  }
+  cvt::RestrictedDual dual;
+  ASSERT_TRUE(engine.ComputeDual(dual));
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1);
+  const cvt::MeshTopology topology =
+    cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  EXPECT_EQ(topology.Components, 1);
+  EXPECT_EQ(topology.BoundaryLoops, 1);
+  EXPECT_EQ(topology.EulerCharacteristic, 1);
+}
+
 TEST(RestrictedVoronoi, CurvedMeshMatchesBruteForce)
 {
   cvt::SurfaceMesh mesh = Sphere(3);

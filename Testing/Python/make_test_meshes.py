@@ -10,6 +10,7 @@ of implicit surfaces, made here). Each is a kind of input the remesher must hand
   twoparts.vtp      two disjoint closed parts
   pieces.vtp        an assembly of 25 parts: a ball, 20 small spheres, 4 small rings (genus 1)
   box.vtp           a box with sharp edges, quads triangulated and subdivided
+  cube.vtp          a cube of 12 triangles (CAD-like faces, each meeting hundreds of cells)
   dirty.vtp         a disk with duplicated points, zero-area and duplicate triangles
   disk.vtp          an open disk (one boundary loop)
 Usage: make_test_meshes.py OUTPUT_DIR"""
@@ -177,6 +178,16 @@ def main():
     box = output(sub)
     box.GetPointData().Initialize()
     write(box, os.path.join(folder, 'box.vtp'))
+
+    # A cube of 12 triangles.
+    coarse = vtk.vtkCubeSource()
+    coarse_merge = vtk.vtkCleanPolyData()
+    coarse_merge.SetInputConnection(coarse.GetOutputPort())
+    coarse_triangles = vtk.vtkTriangleFilter()
+    coarse_triangles.SetInputConnection(coarse_merge.GetOutputPort())
+    cube_mesh = output(coarse_triangles)
+    cube_mesh.GetPointData().Initialize()
+    write(cube_mesh, os.path.join(folder, 'cube.vtp'))
 
     # An open disk, and a dirty copy of it.
     disk = vtk.vtkDiskSource()
