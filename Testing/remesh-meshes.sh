@@ -14,7 +14,7 @@ CHECKS="$HERE/../../shared/checks"
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 /usr/bin/python3 "$HERE/Python/make_test_meshes.py" "$T/meshes" || { echo "cannot make the test meshes"; exit 1; }
-MESHES=${*:-sphere genus2 genus3 dumbbell holes twoparts pieces box cube disk dirty}
+MESHES=${*:-sphere noisy genus2 genus3 dumbbell holes twoparts pieces box cube disk dirty}
 bad=0
 for m in $MESHES; do
   out="$T/$m"
@@ -32,5 +32,12 @@ for m in $MESHES; do
   if [ "$input" != "$remesh" ] || grep -q "topology differs" "$T/$m.log"; then
     echo "  the remesh's topology differs from the input's ($input)"; bad=1
   fi
+  # Closed smooth inputs (no border, no crease) must give well-shaped triangles.
+  angle=$(sed -n 's/^  smallest \/ largest angle *\([0-9.]*\) .*/\1/p' "$T/$m.log")
+  case $m in sphere|noisy|genus2|genus3|dumbbell|twoparts)
+    if awk -v a="$angle" 'BEGIN { exit !(a < 25) }'; then
+      echo "  smallest angle $angle degrees on a smooth closed surface"; bad=1
+    fi;;
+  esac
 done
 [ $bad -eq 0 ] && echo "remesh meshes: ok" || { echo "remesh meshes: FAILED"; exit 1; }

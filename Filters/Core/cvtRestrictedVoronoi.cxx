@@ -95,9 +95,9 @@ constexpr int NeighborCount = 20;
 constexpr double CornerAngleDegrees = 60.0;
 /// Edges whose triangles' normals differ by more are sharp (CAD models' creases) ...
 constexpr double FeatureAngleDegrees = 60.0;
-/// ... when they form lines at least this fraction of the bounding-box diagonal long (scanner
-/// noise makes short ones).
-constexpr double MinimumFeatureLength = 0.03;
+/// ... when the lines they form span at least this fraction of the bounding-box diagonal and
+/// meet at few junctions (scanner noise and sliver triangles make small webs of sharp edges).
+constexpr double MinimumFeatureExtent = 0.15;
 }
 
 struct RestrictedVoronoi::Internals
@@ -684,7 +684,7 @@ const std::vector<int>& RestrictedVoronoi::GetPointLabels() const
 
 //------------------------------------------------------------------------------
 // Borders (edges of one triangle) and sharp feature lines (edges of two triangles whose normals
-// differ by more than FeatureAngleDegrees, in lines of at least MinimumFeatureLength), and the
+// differ by more than FeatureAngleDegrees, in lines spanning MinimumFeatureExtent), and the
 // corners of both: where a line turns by more than CornerAngleDegrees, ends or meets others.
 void RestrictedVoronoi::Internals::FindBordersAndFeatures(const std::vector<std::uint64_t>& keys,
   const std::vector<int>& triangles, const std::vector<int>& locals)
@@ -748,21 +748,62 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const std::vector<std:
       chain[find(line.A)] = find(line.B);
     }
   }
-  std::vector<double> chainLength(pointCount, 0.0);
+  // The extent of each line: the diagonal of the box of its points.
+  std::vector<std::array<double, 6>> box(pointCount);
+  for (const Line& line : lines)
+  {
+    if (line.Kind != 2)
+    {
+      continue;
+    }
+    std::array<double, 6>& b = box[find(line.A)];
+    if (b[0] == 0.0 && b[1] == 0.0 && b[3] == 0.0 && b[4] == 0.0 && b[2] == 0.0 && b[5] == 0.0)
+    {
+      b = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
+    }
+    for (const int p : { line.A, line.B })
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        b[k] = std::min(b[k], mesh.Point(p)[k]);
+        b[3 + k] = std::max(b[3 + k], mesh.Point(p)[k]);
+      }
+    }
+  }
+  // Junctions (points of three or more sharp edges) per line network, and its points: creases
+  // meet at a few corners, noise makes a web of sharp edges.
+  std::vector<int> sharpDegree(pointCount, 0), junctions(pointCount, 0), members(pointCount, 0);
   for (const Line& line : lines)
   {
     if (line.Kind == 2)
     {
-      chainLength[find(line.A)] += std::sqrt(Distance2(mesh.Point(line.A), mesh.Point(line.B)));
+      ++sharpDegree[line.A];
+      ++sharpDegree[line.B];
     }
   }
+  for (int p = 0; p < pointCount; ++p)
+  {
+    if (sharpDegree[p] > 0)
+    {
+      ++members[find(p)];
+      junctions[find(p)] += sharpDegree[p] >= 3 ? 1 : 0;
+    }
+  }
+  const auto webLike = [&](int root) { return junctions[root] > std::max(8, members[root] / 10); };
+  const auto extent = [&box](int root)
+  {
+    const std::array<double, 6>& b = box[root];
+    return std::sqrt((b[3] - b[0]) * (b[3] - b[0]) + (b[4] - b[1]) * (b[4] - b[1]) +
+      (b[5] - b[2]) * (b[5] - b[2]));
+  };
   std::vector<std::uint64_t> kept; // keys of the edges that pin
   std::vector<char> kindOfKept;
   std::vector<int> degree(pointCount, 0);
   std::vector<int> neighbor1(pointCount, -1), neighbor2(pointCount, -1);
   for (const Line& line : lines)
   {
-    if (line.Kind == 2 && chainLength[find(line.A)] < MinimumFeatureLength * diagonal)
+    if (line.Kind == 2 &&
+      (extent(find(line.A)) < MinimumFeatureExtent * diagonal || webLike(find(line.A))))
     {
       continue;
     }

@@ -2,6 +2,7 @@
 """Writes the surface test meshes into a folder (no downloads: VTK sources and marching cubes
 of implicit surfaces, made here). Each is a kind of input the remesher must handle:
   sphere.vtp        closed, genus 0 (VTK's UV sphere: pole fans, uneven triangles)
+  noisy.vtp         the same with 1% radial noise, as a scan (no sharp features to keep)
   torus.vtp         closed, genus 1, as a parametric grid with duplicated seam points
   genus2.vtp        closed, genus 2 (marching cubes: many thin triangles)
   genus3.vtp        closed, genus 3
@@ -70,6 +71,13 @@ def main():
     sphere.SetThetaResolution(80)
     sphere.SetPhiResolution(60)
     write(output(sphere), os.path.join(folder, 'sphere.vtp'))
+    noisy = output(sphere)
+    rng = np.random.default_rng(1)
+    points = noisy.GetPoints()
+    for i in range(points.GetNumberOfPoints()):
+        scale = 1.0 + 0.01 * (rng.random() - 0.5)
+        points.SetPoint(i, *[scale * x for x in points.GetPoint(i)])
+    write(noisy, os.path.join(folder, 'noisy.vtp'))
 
     torus = vtk.vtkParametricTorus()
     torus.SetRingRadius(1.0)
