@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Remeshes every test mesh made by Python/make_test_meshes.py (closed genus 0 to 3, a shape that
 # is not star-shaped, a sphere with four holes, two parts, an assembly of 25 parts, a box with
-# sharp edges, a cube of 12 triangles, an open disk, a dirty disk) with `cvt surface --input` and checks that the remesh has the input's topology.
+# sharp edges, a cube of 12 triangles, a thin plate, an open disk, a dirty disk) with `cvt surface --input` and checks that the remesh has the input's topology.
 # With the shared checks beside the project (../shared/checks), also prints the independent
 # figures: energy F n / A^2 of the sites on the input, Hausdorff distances, valence, angles.
 # Usage: remesh-meshes.sh PATH/TO/cvt [SITES] [MESH...]     (the benchmark mode of issue 10)
@@ -14,7 +14,7 @@ CHECKS="$HERE/../../shared/checks"
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 /usr/bin/python3 "$HERE/Python/make_test_meshes.py" "$T/meshes" || { echo "cannot make the test meshes"; exit 1; }
-MESHES=${*:-sphere noisy genus2 genus3 dumbbell holes twoparts pieces box cube disk dirty}
+MESHES=${*:-sphere noisy genus2 genus3 dumbbell holes twoparts pieces box cube plate disk dirty}
 bad=0
 for m in $MESHES; do
   out="$T/$m"

@@ -3,6 +3,7 @@
 #include "cvtSurfaceMesh.h" // for ComputeMeshTopology
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 
@@ -11,6 +12,9 @@ namespace cvt
 
 namespace
 {
+/// Below this angle (radians: 10 degrees) a triangle of pinned vertices is a sliver.
+constexpr double MinimumBorderAngle = 10.0 * 3.14159265358979323846 / 180.0;
+
 std::uint64_t DirectedKey(int a, int b)
 {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
@@ -87,8 +91,55 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     }
     ++remesh.FilledHoles;
   }
+  // A triangle of three cells along a straight border can be flat once they are pinned to it;
+  // when its widest corner is in no other triangle, that corner is an ear of the border: drop
+  // both (the border then runs straight past it).
+  {
+    std::unordered_map<int, int> uses;
+    for (const auto& t : kept)
+    {
+      for (int v : t)
+      {
+        ++uses[v];
+      }
+    }
+    const auto position = [&dual](int v)
+    {
+      const size_t i = static_cast<size_t>(v);
+      return dual.Pinned[i] ? &dual.BoundaryPoints[3 * i] : &dual.SurfacePoints[3 * i];
+    };
+    std::vector<std::array<int, 3>> shaped;
+    shaped.reserve(kept.size());
+    for (const auto& t : kept)
+    {
+      double angle[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const double* a = position(t[k]);
+        const double* b = position(t[(k + 1) % 3]);
+        const double* d = position(t[(k + 2) % 3]);
+        const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+        const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+        const double norms = std::sqrt(
+          (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+        angle[k] = norms > 0.0
+          ? std::acos(std::clamp((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / norms, -1.0, 1.0))
+          : 0.0;
+      }
+      const int widest = static_cast<int>(std::max_element(angle, angle + 3) - angle);
+      if (*std::min_element(angle, angle + 3) < MinimumBorderAngle && uses[t[widest]] == 1 &&
+        dual.Pinned[t[widest]])
+      {
+        ++remesh.RemovedTriangles;
+        continue;
+      }
+      shaped.push_back(t);
+    }
+    kept.swap(shaped);
+  }
   // Vertices: the used sites, at their surface (or border) points.
   std::unordered_map<int, int> vertexOf;
+  std::vector<int> dualOf; // the dual vertex of each remesh vertex
   for (auto& t : kept)
   {
     for (int& site : t)
@@ -105,12 +156,43 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
         remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), lambda, lambda + 3);
         remesh.SourceTriangles.push_back(
           border ? dual.BoundaryTriangles[i] : dual.SurfaceTriangles[i]);
-        remesh.SiteIds.push_back(site);
+        remesh.SiteIds.push_back(dual.Sites[i]);
+        dualOf.push_back(site);
       }
       site = found.first->second;
     }
   }
   remesh.Triangles = std::move(kept);
+  // Three cells along a straight stretch of the border can make a triangle whose vertices, once
+  // pinned, are (nearly) in line: its widest corner goes back to its cell's surface point.
+  for (const auto& t : remesh.Triangles)
+  {
+    double angle[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const double* a = &remesh.Points[3 * t[k]];
+      const double* b = &remesh.Points[3 * t[(k + 1) % 3]];
+      const double* d = &remesh.Points[3 * t[(k + 2) % 3]];
+      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+      const double norms = std::sqrt(
+        (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+      angle[k] = norms > 0.0
+        ? std::acos(std::clamp((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / norms, -1.0, 1.0))
+        : 0.0;
+    }
+    const int widest = static_cast<int>(std::max_element(angle, angle + 3) - angle);
+    const size_t i = static_cast<size_t>(dualOf[t[widest]]);
+    if (*std::min_element(angle, angle + 3) < MinimumBorderAngle && dual.Pinned[i] &&
+      dual.SurfaceTriangles[i] >= 0)
+    {
+      std::copy(
+        &dual.SurfacePoints[3 * i], &dual.SurfacePoints[3 * i] + 3, &remesh.Points[3 * t[widest]]);
+      std::copy(&dual.SurfaceBarycentric[3 * i], &dual.SurfaceBarycentric[3 * i] + 3,
+        &remesh.SourceBarycentric[3 * t[widest]]);
+      remesh.SourceTriangles[t[widest]] = dual.SurfaceTriangles[i];
+    }
+  }
   return remesh;
 }
 

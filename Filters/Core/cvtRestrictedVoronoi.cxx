@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 
 namespace cvt
 {
@@ -89,6 +90,8 @@ struct SiteContact
   double Segments[3][6];
   bool TouchesBorder; // one of the segments is on the mesh's border (not a feature line)
   double Area;        // of this piece of the cell
+  int EdgeMask;       // bit e: the piece runs along edge e of its triangle (length > 0)
+  int CornerMask;     // bit k: the piece holds corner k of its triangle
 };
 
 constexpr int NeighborCount = 20;
@@ -125,7 +128,8 @@ struct RestrictedVoronoi::Internals
   std::vector<int> PointLabels;
   int BlockCount = 1;
   std::vector<std::vector<Piece>> BlockPieces;
-  std::vector<std::vector<std::array<int, 3>>> BlockTriples;
+  std::vector<std::vector<std::array<int, 4>>> BlockTriples; // sites i, j, k and the triangle
+  std::vector<std::array<int, 3>> Adjacent; // per triangle edge: the triangle across it, or -1
   std::vector<std::vector<SiteContact>> BlockContacts;
 
   void LabelPoints();
@@ -141,7 +145,7 @@ struct RestrictedVoronoi::Internals
     int Mark = 0;
   };
   void ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
-    std::vector<std::array<int, 3>>& triples, std::vector<SiteContact>& contacts,
+    std::vector<std::array<int, 4>>& triples, std::vector<SiteContact>& contacts,
     Scratch& scratch) const;
   bool ClipToCell(int t, int site, Polygon& polygon, std::vector<std::uint32_t>& scratchIds,
     std::vector<double>& scratchD2) const;
@@ -428,6 +432,8 @@ void RestrictedVoronoi::Internals::Contact(
   contact.BoundaryDistance2 = std::numeric_limits<double>::infinity();
   contact.SegmentCount = 0;
   contact.TouchesBorder = false;
+  contact.EdgeMask = 0;
+  contact.CornerMask = 0;
   contact.Area = 0.0;
   for (int v = 1; v + 1 < polygon.Size; ++v)
   {
@@ -490,6 +496,14 @@ void RestrictedVoronoi::Internals::Contact(
         std::copy(a.P, a.P + 3, contact.BoundaryPoint);
       }
     }
+    if (a.Label < 0 && length2 > 0.0)
+    {
+      contact.EdgeMask |= 1 << (-1 - a.Label);
+    }
+    if (a.Origin >= 0)
+    {
+      contact.CornerMask |= 1 << a.Origin;
+    }
     if (a.Label < 0 && this->OnMeshBoundary[t][-1 - a.Label] && contact.SegmentCount < 3)
     {
       contact.TouchesBorder |= this->OnMeshBoundary[t][-1 - a.Label] == 1;
@@ -503,7 +517,7 @@ void RestrictedVoronoi::Internals::Contact(
 
 //------------------------------------------------------------------------------
 void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
-  std::vector<std::array<int, 3>>& triples, std::vector<SiteContact>& contacts,
+  std::vector<std::array<int, 4>>& triples, std::vector<SiteContact>& contacts,
   Scratch& scratch) const
 {
   const auto& tri = this->Mesh.Triangles[t];
@@ -579,7 +593,7 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
         // clockwise seen along the triangle's normal): the dual triangle's orientation.
         std::array<int, 3> triple = { site, before, label };
         std::rotate(triple.begin(), std::min_element(triple.begin(), triple.end()), triple.end());
-        triples.push_back(triple);
+        triples.push_back({ triple[0], triple[1], triple[2], t });
       }
     }
     if (dual)
@@ -654,7 +668,7 @@ void RestrictedVoronoi::Internals::Sweep(bool dual)
       for (int block = first; block < last; ++block)
       {
         std::vector<Piece>& pieces = this->BlockPieces[block];
-        std::vector<std::array<int, 3>>& triples = this->BlockTriples[block];
+        std::vector<std::array<int, 4>>& triples = this->BlockTriples[block];
         std::vector<SiteContact>& contacts = this->BlockContacts[block];
         pieces.clear();
         triples.clear();
@@ -900,6 +914,17 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
     locals[u] = uses[u].second % 3;
   }
   d.FindBordersAndFeatures(keys, triangles, locals);
+  // The triangle across each edge (edges of exactly two triangles), for the dual's components.
+  d.Adjacent.assign(triangleCount, { -1, -1, -1 });
+  for (size_t u = 0; u + 1 < keys.size(); ++u)
+  {
+    if (keys[u] == keys[u + 1] && (u + 2 >= keys.size() || keys[u + 2] != keys[u]) &&
+      (u == 0 || keys[u - 1] != keys[u]))
+    {
+      d.Adjacent[triangles[u]][locals[u]] = triangles[u + 1];
+      d.Adjacent[triangles[u + 1]][locals[u + 1]] = triangles[u];
+    }
+  }
   // Fixed blocks of triangles: the sums are added in the same order for any thread count.
   d.BlockCount = std::max(1, std::min(256, triangleCount / 256));
   d.BlockPieces.assign(d.BlockCount, {});
@@ -1025,17 +1050,111 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
     return this->Fail("set a mesh and sites before computing the dual");
   }
   d.Sweep(true);
-  const size_t siteCount = d.Sites.size() / 3;
   dual = RestrictedDual();
+  // The pieces (one per cell and triangle), in block order, and which piece a cell has in a
+  // triangle.
+  std::vector<const SiteContact*> pieces;
+  for (const auto& block : d.BlockContacts)
+  {
+    for (const SiteContact& c : block)
+    {
+      pieces.push_back(&c);
+    }
+  }
+  const auto key = [](int site, int triangle)
+  { return (static_cast<std::uint64_t>(site) << 32) | static_cast<std::uint32_t>(triangle); };
+  std::unordered_map<std::uint64_t, int> pieceOf;
+  pieceOf.reserve(2 * pieces.size());
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    pieceOf.emplace(key(pieces[p]->Site, pieces[p]->Triangle), static_cast<int>(p));
+  }
+  // A restricted cell can have several connected parts (a thin plate: one on each side). Its
+  // pieces are joined across the mesh edges they share; each part is a vertex of the dual
+  // (the "multinerve"), so the remesh keeps the plate's two sides apart.
+  std::vector<int> parent(pieces.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&parent](int p)
+  {
+    while (parent[p] != p)
+    {
+      p = parent[p] = parent[parent[p]];
+    }
+    return p;
+  };
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const int across = (pieces[p]->EdgeMask >> e) & 1 ? d.Adjacent[pieces[p]->Triangle][e] : -1;
+      if (across < 0)
+      {
+        continue;
+      }
+      const auto found = pieceOf.find(key(pieces[p]->Site, across));
+      if (found != pieceOf.end())
+      {
+        parent[find(static_cast<int>(p))] = find(found->second);
+      }
+    }
+  }
+  // Pieces of a cell that hold the same mesh point touch there: one part (a jagged border's
+  // teeth, a cell around a vertex).
+  std::unordered_map<std::uint64_t, int> pieceAtPoint;
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if ((pieces[p]->CornerMask >> k) & 1)
+      {
+        const int point = d.Mesh.Triangles[pieces[p]->Triangle][k];
+        const auto found = pieceAtPoint.emplace(key(pieces[p]->Site, point), static_cast<int>(p));
+        if (!found.second)
+        {
+          parent[find(static_cast<int>(p))] = find(found.first->second);
+        }
+      }
+    }
+  }
+  std::vector<int> vertexOfRoot(pieces.size(), -1), vertexOfPiece(pieces.size());
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    int& vertex = vertexOfRoot[find(static_cast<int>(p))];
+    if (vertex < 0)
+    {
+      vertex = static_cast<int>(dual.Sites.size());
+      dual.Sites.push_back(pieces[p]->Site);
+    }
+    vertexOfPiece[p] = vertex;
+  }
+  const size_t vertexCount = dual.Sites.size();
   std::vector<std::array<int, 3>> triples;
   for (const auto& block : d.BlockTriples)
   {
-    triples.insert(triples.end(), block.begin(), block.end());
+    for (const auto& t : block)
+    {
+      std::array<int, 3> triangle;
+      bool found = true;
+      for (int k = 0; k < 3 && found; ++k)
+      {
+        const auto piece = pieceOf.find(key(t[k], t[3]));
+        found = piece != pieceOf.end();
+        triangle[k] = found ? vertexOfPiece[piece->second] : -1;
+      }
+      if (found && triangle[0] != triangle[1] && triangle[1] != triangle[2] &&
+        triangle[2] != triangle[0])
+      {
+        std::rotate(
+          triangle.begin(), std::min_element(triangle.begin(), triangle.end()), triangle.end());
+        triples.push_back(triangle);
+      }
+    }
   }
   std::sort(triples.begin(), triples.end());
   triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
   dual.Triangles = std::move(triples);
 
+  const size_t siteCount = vertexCount; // below, per vertex of the dual
   dual.SurfacePoints.assign(3 * siteCount, 0.0);
   dual.SurfaceTriangles.assign(siteCount, -1);
   dual.SurfaceBarycentric.assign(3 * siteCount, 0.0);
@@ -1050,11 +1169,11 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   std::vector<double> borderLength(siteCount, 0.0), borderMoment(3 * siteCount, 0.0);
   std::vector<double> cellArea(siteCount, 0.0);
   std::vector<char> severalCorners(siteCount, 0);
-  for (const auto& block : d.BlockContacts)
+  for (size_t p = 0; p < pieces.size(); ++p)
   {
-    for (const SiteContact& c : block)
     {
-      const size_t i = static_cast<size_t>(c.Site);
+      const SiteContact& c = *pieces[p];
+      const size_t i = static_cast<size_t>(vertexOfPiece[p]);
       if (c.Distance2 < nearest2[i])
       {
         nearest2[i] = c.Distance2;
@@ -1105,11 +1224,11 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   // Cells on the border without a corner: pinned to the border point nearest to the centroid
   // of their part of the border (the 1D centroid), which spaces the remesh's border evenly.
   std::fill(boundary2.begin(), boundary2.end(), std::numeric_limits<double>::infinity());
-  for (const auto& block : d.BlockContacts)
+  for (size_t p = 0; p < pieces.size(); ++p)
   {
-    for (const SiteContact& c : block)
     {
-      const size_t i = static_cast<size_t>(c.Site);
+      const SiteContact& c = *pieces[p];
+      const size_t i = static_cast<size_t>(vertexOfPiece[p]);
       if (boundaryRank[i] != 1 || !(borderLength[i] > 0.0))
       {
         continue;

@@ -18,19 +18,22 @@
 namespace cvt
 {
 
-/// The dual of the restricted Voronoi diagram and where each site meets the surface.
+/// The dual of the restricted Voronoi diagram and where each site meets the surface. Its
+/// vertices are the connected parts of the restricted cells (one per site, except where a cell
+/// reaches two sheets of the surface, as across a thin plate: then one per part).
 struct RestrictedDual
 {
-  /// Sites i, j, k whose restricted cells meet at a point, oriented like the mesh.
+  std::vector<int> Sites; // the site of each vertex
+  /// Vertices whose cell parts meet at a point, oriented like the mesh.
   std::vector<std::array<int, 3>> Triangles;
-  /// Per site (3 values each): the point of its restricted cell nearest to the site, the
+  /// Per vertex (3 values each): the point of its cell part nearest to the site, the
   /// triangle holding it (-1: the cell is empty) and its barycentric coordinates there.
   std::vector<double> SurfacePoints;
   std::vector<int> SurfaceTriangles;
   std::vector<double> SurfaceBarycentric;
-  /// Per site: whether its cell meets the mesh's border; whether it meets the border or a sharp
-  /// feature line (edges whose triangles meet at more than 60 degrees, in lines at least 3% of
-  /// the bounding-box diagonal long), and then the point of those lines it is pinned to in the
+  /// Per vertex: whether its cell part meets the mesh's border; whether it meets the border or a
+  /// sharp feature line (edges whose triangles meet at more than 60 degrees, in lines at least 3%
+  /// of the bounding-box diagonal long), and then the point of those lines it is pinned to in the
   /// remesh (a corner of its cell, else the point nearest to the centroid of its part of the
   /// lines), with triangle and barycentric coordinates as above.
   std::vector<char> OnBoundary;

@@ -12,6 +12,7 @@ of implicit surfaces, made here). Each is a kind of input the remesher must hand
   pieces.vtp        an assembly of 25 parts: a ball, 20 small spheres, 4 small rings (genus 1)
   box.vtp           a box with sharp edges, quads triangulated and subdivided
   cube.vtp          a cube of 12 triangles (CAD-like faces, each meeting hundreds of cells)
+  plate.vtp         a plate thinner than the cells at 1000 sites (cells reach both sides)
   dirty.vtp         a disk with duplicated points, zero-area and duplicate triangles
   disk.vtp          an open disk (one boundary loop)
 Usage: make_test_meshes.py OUTPUT_DIR"""
@@ -196,6 +197,20 @@ def main():
     cube_mesh = output(coarse_triangles)
     cube_mesh.GetPointData().Initialize()
     write(cube_mesh, os.path.join(folder, 'cube.vtp'))
+
+    # A plate 2% thick: at 1000 sites a cell reaches both sides.
+    slab = vtk.vtkCubeSource()
+    slab.SetZLength(0.02)
+    slab_merge = vtk.vtkCleanPolyData()
+    slab_merge.SetInputConnection(slab.GetOutputPort())
+    slab_triangles = vtk.vtkTriangleFilter()
+    slab_triangles.SetInputConnection(slab_merge.GetOutputPort())
+    slab_finer = vtk.vtkLinearSubdivisionFilter()
+    slab_finer.SetInputConnection(slab_triangles.GetOutputPort())
+    slab_finer.SetNumberOfSubdivisions(3)
+    plate = output(slab_finer)
+    plate.GetPointData().Initialize()
+    write(plate, os.path.join(folder, 'plate.vtp'))
 
     # An open disk, and a dirty copy of it.
     disk = vtk.vtkDiskSource()
