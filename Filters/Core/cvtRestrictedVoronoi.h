@@ -32,9 +32,9 @@ struct RestrictedDual
   std::vector<int> SurfaceTriangles;
   std::vector<double> SurfaceBarycentric;
   /// Per vertex: whether its cell part meets the mesh's border; whether it meets the border or a
-  /// sharp feature line (edges whose triangles meet at more than 60 degrees, in lines at least 3%
-  /// of the bounding-box diagonal long), and then the point of those lines it is pinned to in the
-  /// remesh (a corner of its cell, else the point nearest to the centroid of its part of the
+  /// sharp feature line (edges whose triangles meet at more than 60 degrees, in lines spanning
+  /// 15% of the bounding-box diagonal with few junctions), and then the point of those lines it
+  /// is pinned to in the remesh (a corner of its cell, else the point nearest to the centroid of its part of the
   /// lines), with triangle and barycentric coordinates as above.
   std::vector<char> OnBoundary;
   std::vector<char> Pinned;
