@@ -34,8 +34,8 @@ struct RestrictedDual
   /// Per vertex: whether its cell part meets the mesh's border; whether it meets the border or a
   /// sharp feature line (edges whose triangles meet at more than 60 degrees, in lines spanning
   /// 15% of the bounding-box diagonal with few junctions), and then the point of those lines it
-  /// is pinned to in the remesh (a corner of its cell, else the point nearest to the centroid of its part of the
-  /// lines), with triangle and barycentric coordinates as above.
+  /// is pinned to in the remesh (a corner of its cell, else the point nearest to the centroid of
+  /// its part of the lines), with triangle and barycentric coordinates as above.
   std::vector<char> OnBoundary;
   std::vector<char> Pinned;
   std::vector<double> BoundaryPoints;
