@@ -1,8 +1,8 @@
 #include "cvtExactVoronoi.h"
 
-#include "vtkSMPTools.h"
+#include "cvtPointCloud.h"
 
-#include <nanoflann.hpp>
+#include "vtkSMPTools.h"
 
 #include <cstdint>
 
@@ -428,21 +428,6 @@ CellSums ExactCellSums(const Grid& grid, const std::vector<double>& sites,
   return sums;
 }
 
-namespace
-{
-struct PlanarSites
-{
-  const std::vector<double>* Sites = nullptr;
-  size_t kdtree_get_point_count() const { return this->Sites->size() / 2; }
-  double kdtree_get_pt(size_t i, size_t d) const { return (*this->Sites)[2 * i + d]; }
-  template<class Box>
-  bool kdtree_get_bbox(Box&) const
-  {
-    return false;
-  }
-};
-}
-
 std::vector<int> NearestSiteLabels(const Grid& grid, const std::vector<double>& sites)
 {
   std::vector<int> labels(static_cast<size_t>(grid.NumberOfPixels()), -1);
@@ -450,11 +435,9 @@ std::vector<int> NearestSiteLabels(const Grid& grid, const std::vector<double>& 
   {
     return labels;
   }
-  PlanarSites cloud;
-  cloud.Sites = &sites;
-  const nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PlanarSites>,
-    PlanarSites, 2, std::uint32_t>
-    tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  PointCloud<2> cloud;
+  cloud.Points = &sites;
+  const PointTree<2> tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   vtkSMPTools::For(0, grid.Height, 8,
     [&](int first, int last)
     {

@@ -1,10 +1,9 @@
 #include "cvtRestrictedVoronoi.h"
 
+#include "cvtPointCloud.h"
 #include "cvtThreads.h"
 
 #include "vtkSMPTools.h"
-
-#include <nanoflann.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -34,22 +33,6 @@ inline void Cross(const double* a, const double* b, double* out)
   out[1] = a[2] * b[0] - a[0] * b[2];
   out[2] = a[0] * b[1] - a[1] * b[0];
 }
-
-/// nanoflann's view of the flat site array.
-struct SiteCloud
-{
-  const std::vector<double>* Sites = nullptr;
-  size_t kdtree_get_point_count() const { return this->Sites->size() / 3; }
-  double kdtree_get_pt(size_t i, size_t d) const { return (*this->Sites)[3 * i + d]; }
-  template<class Box>
-  bool kdtree_get_bbox(Box&) const
-  {
-    return false;
-  }
-};
-using SiteTree =
-  nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SiteCloud>, SiteCloud, 3,
-    std::uint32_t>;
 
 /// A vertex of a clipped triangle. Label names the edge to the next vertex: -1 - e for edge e
 /// of the mesh triangle (from local vertex e to e + 1), j >= 0 for the bisector with site j.
@@ -115,8 +98,8 @@ struct RestrictedVoronoi::Internals
     const std::vector<int>& triangles, const std::vector<int>& locals);
 
   std::vector<double> Sites;
-  SiteCloud Cloud;
-  std::unique_ptr<SiteTree> Tree;
+  PointCloud<3> Cloud;
+  std::unique_ptr<PointTree<3>> Tree;
   int K = 0;                            // neighbours stored per site
   std::vector<std::uint32_t> Neighbors; // K per site, nearest first
   std::vector<double> NeighborDistance2;
@@ -977,8 +960,8 @@ bool RestrictedVoronoi::SetSites(const std::vector<double>& sites)
   {
     d.PointLabels.assign(d.Mesh.NumberOfPoints(), -1);
   }
-  d.Cloud.Sites = &d.Sites;
-  d.Tree.reset(new SiteTree(3, d.Cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)));
+  d.Cloud.Points = &d.Sites;
+  d.Tree.reset(new PointTree<3>(3, d.Cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)));
   const int siteCount = static_cast<int>(sites.size() / 3);
   d.K = std::min(NeighborCount, siteCount - 1);
   d.Neighbors.resize(static_cast<size_t>(siteCount) * d.K);

@@ -1,10 +1,9 @@
 #include "cvtSurface.h"
 
+#include "cvtPointCloud.h"
 #include "cvtSampling.h"
 
 #include "vtkSMPTools.h"
-
-#include <nanoflann.hpp>
 
 #include <cstdint>
 
@@ -411,21 +410,6 @@ void GeometryImageMesh(const GeometryImage& image, int stride, std::vector<doubl
   }
 }
 
-namespace
-{
-struct SiteCloud3D
-{
-  const std::vector<double>* Sites = nullptr;
-  size_t kdtree_get_point_count() const { return this->Sites->size() / 3; }
-  double kdtree_get_pt(size_t i, size_t d) const { return (*this->Sites)[3 * i + d]; }
-  template<class Box>
-  bool kdtree_get_bbox(Box&) const
-  {
-    return false;
-  }
-};
-}
-
 std::vector<int> NearestSiteLabels(const GeometryImage& image, const std::vector<double>& sites)
 {
   std::vector<int> labels(static_cast<size_t>(image.NumberOfPixels()), -1);
@@ -433,11 +417,9 @@ std::vector<int> NearestSiteLabels(const GeometryImage& image, const std::vector
   {
     return labels;
   }
-  SiteCloud3D cloud;
-  cloud.Sites = &sites;
-  const nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SiteCloud3D>,
-    SiteCloud3D, 3, std::uint32_t>
-    tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  PointCloud<3> cloud;
+  cloud.Points = &sites;
+  const PointTree<3> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   vtkSMPTools::For(0, image.NumberOfPixels(), 4096,
     [&](long long first, long long last)
     {
