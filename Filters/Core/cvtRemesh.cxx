@@ -15,6 +15,25 @@ namespace
 /// Below this angle (radians: 10 degrees) a triangle of pinned vertices is a sliver.
 constexpr double MinimumBorderAngle = 10.0 * 3.14159265358979323846 / 180.0;
 
+/// The angles (radians) of triangle p0 p1 p2 at its three corners.
+void CornerAngles(const double* p0, const double* p1, const double* p2, double angle[3])
+{
+  const double* p[3] = { p0, p1, p2 };
+  for (int k = 0; k < 3; ++k)
+  {
+    const double* a = p[k];
+    const double* b = p[(k + 1) % 3];
+    const double* d = p[(k + 2) % 3];
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+    const double norms = std::sqrt(
+      (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    angle[k] = norms > 0.0
+      ? std::acos(std::clamp((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / norms, -1.0, 1.0))
+      : 0.0;
+  }
+}
+
 std::uint64_t DirectedKey(int a, int b)
 {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
@@ -113,19 +132,7 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     for (const auto& t : kept)
     {
       double angle[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        const double* a = position(t[k]);
-        const double* b = position(t[(k + 1) % 3]);
-        const double* d = position(t[(k + 2) % 3]);
-        const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-        const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-        const double norms = std::sqrt(
-          (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
-        angle[k] = norms > 0.0
-          ? std::acos(std::clamp((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / norms, -1.0, 1.0))
-          : 0.0;
-      }
+      CornerAngles(position(t[0]), position(t[1]), position(t[2]), angle);
       const int widest = static_cast<int>(std::max_element(angle, angle + 3) - angle);
       if (*std::min_element(angle, angle + 3) < MinimumBorderAngle && uses[t[widest]] == 1 &&
         dual.Pinned[t[widest]])
@@ -168,19 +175,8 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
   for (const auto& t : remesh.Triangles)
   {
     double angle[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      const double* a = &remesh.Points[3 * t[k]];
-      const double* b = &remesh.Points[3 * t[(k + 1) % 3]];
-      const double* d = &remesh.Points[3 * t[(k + 2) % 3]];
-      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-      const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-      const double norms = std::sqrt(
-        (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
-      angle[k] = norms > 0.0
-        ? std::acos(std::clamp((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / norms, -1.0, 1.0))
-        : 0.0;
-    }
+    CornerAngles(
+      &remesh.Points[3 * t[0]], &remesh.Points[3 * t[1]], &remesh.Points[3 * t[2]], angle);
     const int widest = static_cast<int>(std::max_element(angle, angle + 3) - angle);
     const size_t i = static_cast<size_t>(dualOf[t[widest]]);
     if (*std::min_element(angle, angle + 3) < MinimumBorderAngle && dual.Pinned[i] &&
