@@ -306,6 +306,9 @@ int vtkCVTRemeshFilter::RequestData(
   points->SetNumberOfPoints(static_cast<vtkIdType>(remesh.SiteIds.size()));
   vtkPointData* remeshPD = remeshOut->GetPointData();
   vtkPointData* sourcePD = labelsOut->GetPointData();
+  // The input's normals would not fit the remesh (not unit length once interpolated, and
+  // reversed where the repairs reoriented the input): vtkPolyDataNormals makes the remesh's own.
+  remeshPD->CopyNormalsOff();
   remeshPD->InterpolateAllocate(sourcePD, static_cast<vtkIdType>(remesh.SiteIds.size()));
   for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
   {

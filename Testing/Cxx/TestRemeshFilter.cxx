@@ -154,6 +154,8 @@ TEST(RemeshFilter, SphereBecomesAGoodClosedSphere)
   EXPECT_GT(run.Filter->GetHistoryOutput()->GetNumberOfRows(), 10);
   // Labels: the input with each point's nearest site.
   EXPECT_NE(run.Filter->GetLabelsOutput()->GetPointData()->GetArray("SiteId"), nullptr);
+  // The input's normals (vtkSphereSource makes them) are not carried onto the remesh.
+  EXPECT_EQ(remesh->GetPointData()->GetNormals(), nullptr);
 }
 
 TEST(RemeshFilter, GenusTwoAndTwoPartsKeepTheirTopology)
