@@ -395,14 +395,7 @@ int vtkCVTImageFilter::RequestData(
   labelsOut->SetExtent(image->GetExtent());
   labelsOut->SetSpacing(spacing);
   labelsOut->SetOrigin(origin);
-  vtkNew<vtkIntArray> labelArray;
-  labelArray->SetName("SiteId");
-  labelArray->SetNumberOfValues(static_cast<vtkIdType>(labels.size()));
-  for (size_t p = 0; p < labels.size(); ++p)
-  {
-    labelArray->SetValue(static_cast<vtkIdType>(p), labels[p]);
-  }
-  labelsOut->GetPointData()->SetScalars(labelArray);
+  labelsOut->GetPointData()->SetScalars(cvtvtk::SiteIdArray(labels));
 
   dualOut->SetPoints(points);
   dualOut->SetPolys(DualTriangles(sitesOut, grid));

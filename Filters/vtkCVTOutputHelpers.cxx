@@ -3,6 +3,7 @@
 #include "cvtSurface.h"
 
 #include "cvtEngine.h"
+#include "cvtQuality.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -69,6 +70,36 @@ vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<doub
   output->GetPointData()->AddArray(mass);
   output->GetPointData()->AddArray(energy);
   return points;
+}
+
+vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName("SiteId");
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    array->SetValue(static_cast<vtkIdType>(k), values[k]);
+  }
+  return array;
+}
+
+void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality)
+{
+  AddFieldValue(fields, "Valence6Fraction", quality.Valence6Fraction);
+  AddFieldValue(fields, "MinimumAngle", quality.MinimumAngle);
+  AddFieldValue(fields, "MaximumAngle", quality.MaximumAngle);
+  for (const auto& histogram : { std::make_pair("ValenceHistogram", &quality.ValenceHistogram),
+         std::make_pair("AngleHistogram", &quality.AngleHistogram) })
+  {
+    vtkNew<vtkIntArray> counts;
+    counts->SetName(histogram.first);
+    for (int count : *histogram.second)
+    {
+      counts->InsertNextValue(count);
+    }
+    fields->AddArray(counts);
+  }
 }
 
 void RequestWholeExtent(vtkInformation* inputInformation)

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "vtkIntArray.h"     // for SiteIdArray
 #include "vtkSmartPointer.h" // for return values
 
 class vtkFieldData;
@@ -19,6 +20,7 @@ namespace cvt
 {
 struct CellSums;
 struct GeometryImage;
+struct MeshQuality;
 }
 
 namespace cvtvtk
@@ -34,6 +36,13 @@ void AddFieldString(vtkFieldData* fields, const char* name, const std::string& v
 /// point arrays SiteId, Mass, Energy. Returns the points, for the dual or remesh to share.
 vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<double>& sites,
   int dimensions, double z, const cvt::CellSums& sums);
+
+/// An int array named SiteId with these values (labels per pixel or point, sites per vertex).
+vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values);
+
+/// A remesh's quality in its field data: Valence6Fraction, MinimumAngle, MaximumAngle and the
+/// ValenceHistogram and AngleHistogram arrays.
+void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality);
 
 /// Asks the upstream image for its whole extent: every pixel takes part in every cell.
 void RequestWholeExtent(vtkInformation* inputInformation);

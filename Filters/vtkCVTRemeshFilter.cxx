@@ -73,14 +73,7 @@ void FillLabels(vtkPolyData* output, vtkPolyData* source, const cvt::SurfaceMesh
   }
   output->SetPoints(points);
   output->SetPolys(polys);
-  vtkNew<vtkIntArray> siteIds;
-  siteIds->SetName("SiteId");
-  siteIds->SetNumberOfValues(mesh.NumberOfPoints());
-  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
-  {
-    siteIds->SetValue(p, labels[p]);
-  }
-  pd->AddArray(siteIds);
+  pd->AddArray(cvtvtk::SiteIdArray(labels));
 }
 
 void AddTopology(vtkFieldData* fields, const char* prefix, const cvt::MeshTopology& topology)
@@ -327,13 +320,7 @@ int vtkCVTRemeshFilter::RequestData(
     remeshPD->InterpolatePoint(sourcePD, static_cast<vtkIdType>(v), corners, weights);
   }
   remeshPD->RemoveArray("SiteId");
-  vtkNew<vtkIntArray> remeshIds;
-  remeshIds->SetName("SiteId");
-  for (int site : remesh.SiteIds)
-  {
-    remeshIds->InsertNextValue(site);
-  }
-  remeshPD->AddArray(remeshIds);
+  remeshPD->AddArray(cvtvtk::SiteIdArray(remesh.SiteIds));
   vtkNew<vtkCellArray> polys;
   for (const auto& t : remesh.Triangles)
   {
@@ -344,22 +331,9 @@ int vtkCVTRemeshFilter::RequestData(
   remeshOut->SetPolys(polys);
   const cvt::MeshQuality quality = cvt::MeasureMesh(remesh.Points, remesh.Triangles);
   vtkFieldData* remeshFields = remeshOut->GetFieldData();
-  cvtvtk::AddFieldValue(remeshFields, "Valence6Fraction", quality.Valence6Fraction);
-  cvtvtk::AddFieldValue(remeshFields, "MinimumAngle", quality.MinimumAngle);
-  cvtvtk::AddFieldValue(remeshFields, "MaximumAngle", quality.MaximumAngle);
+  cvtvtk::AddMeshQuality(remeshFields, quality);
   cvtvtk::AddFieldValue(remeshFields, "RemovedTriangles", remesh.RemovedTriangles);
   cvtvtk::AddFieldValue(remeshFields, "FilledHoles", remesh.FilledHoles);
-  for (const auto& histogram : { std::make_pair("ValenceHistogram", &quality.ValenceHistogram),
-         std::make_pair("AngleHistogram", &quality.AngleHistogram) })
-  {
-    vtkNew<vtkIntArray> counts;
-    counts->SetName(histogram.first);
-    for (int count : *histogram.second)
-    {
-      counts->InsertNextValue(count);
-    }
-    remeshFields->AddArray(counts);
-  }
   const cvt::MeshTopology remeshTopology =
     cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
   AddTopology(remeshFields, "", remeshTopology);

@@ -286,14 +286,7 @@ int vtkCVTSurfaceFilter::RequestData(
   cvtvtk::AddFieldString(fields, "EngineReason", choice.Reason);
 
   labelsOut->ShallowCopy(input);
-  vtkNew<vtkIntArray> labels;
-  labels->SetName("SiteId");
-  labels->SetNumberOfValues(static_cast<vtkIdType>(result.Labels.size()));
-  for (size_t p = 0; p < result.Labels.size(); ++p)
-  {
-    labels->SetValue(static_cast<vtkIdType>(p), result.Labels[p]);
-  }
-  labelsOut->GetPointData()->AddArray(labels);
+  labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(result.Labels));
 
   const std::vector<std::array<int, 3>> dual =
     cvt::DualTriangles(image, result.Labels, result.Sites);
@@ -307,20 +300,7 @@ int vtkCVTSurfaceFilter::RequestData(
   remeshOut->SetPolys(triangles);
   const cvt::MeshQuality quality = cvt::MeasureMesh(result.Sites, dual);
   vtkFieldData* remeshFields = remeshOut->GetFieldData();
-  cvtvtk::AddFieldValue(remeshFields, "Valence6Fraction", quality.Valence6Fraction);
-  cvtvtk::AddFieldValue(remeshFields, "MinimumAngle", quality.MinimumAngle);
-  cvtvtk::AddFieldValue(remeshFields, "MaximumAngle", quality.MaximumAngle);
-  for (const auto& histogram : { std::make_pair("ValenceHistogram", &quality.ValenceHistogram),
-         std::make_pair("AngleHistogram", &quality.AngleHistogram) })
-  {
-    vtkNew<vtkIntArray> counts;
-    counts->SetName(histogram.first);
-    for (int count : *histogram.second)
-    {
-      counts->InsertNextValue(count);
-    }
-    remeshFields->AddArray(counts);
-  }
+  cvtvtk::AddMeshQuality(remeshFields, quality);
   vtkNew<vtkIntArray> remeshIds;
   remeshIds->DeepCopy(sitesOut->GetPointData()->GetArray("SiteId"));
   remeshOut->GetPointData()->AddArray(remeshIds);
@@ -428,15 +408,7 @@ int vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage&
   {
     sitesOut->GetPoint(i, &sites[3 * i]);
   }
-  const std::vector<int> labels = cvt::NearestSiteLabels(image, sites);
-  vtkNew<vtkIntArray> labelArray;
-  labelArray->SetName("SiteId");
-  labelArray->SetNumberOfValues(static_cast<vtkIdType>(labels.size()));
-  for (size_t p = 0; p < labels.size(); ++p)
-  {
-    labelArray->SetValue(static_cast<vtkIdType>(p), labels[p]);
-  }
-  labelsOut->GetPointData()->AddArray(labelArray);
+  labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(cvt::NearestSiteLabels(image, sites)));
   return 1;
 }
 
