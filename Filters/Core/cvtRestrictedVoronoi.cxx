@@ -1,5 +1,6 @@
 #include "cvtRestrictedVoronoi.h"
 
+#include "cvtEdgeTable.h"
 #include "cvtPointCloud.h"
 #include "cvtThreads.h"
 
@@ -94,8 +95,7 @@ struct RestrictedVoronoi::Internals
   /// meet a border or feature line are pinned to it in the remesh.
   std::vector<std::array<char, 3>> OnMeshBoundary;
   std::vector<char> Corner; // per point: where a border or feature line turns, ends or meets
-  void FindBordersAndFeatures(const std::vector<std::uint64_t>& keys,
-    const std::vector<int>& triangles, const std::vector<int>& locals);
+  void FindBordersAndFeatures(const EdgeTable& edges);
 
   std::vector<double> Sites;
   PointCloud<3> Cloud;
@@ -683,8 +683,7 @@ const std::vector<int>& RestrictedVoronoi::GetPointLabels() const
 // Borders (edges of one triangle) and sharp feature lines (edges of two triangles whose normals
 // differ by more than FeatureAngleDegrees, in lines spanning MinimumFeatureExtent), and the
 // corners of both: where a line turns by more than CornerAngleDegrees, ends or meets others.
-void RestrictedVoronoi::Internals::FindBordersAndFeatures(const std::vector<std::uint64_t>& keys,
-  const std::vector<int>& triangles, const std::vector<int>& locals)
+void RestrictedVoronoi::Internals::FindBordersAndFeatures(const EdgeTable& edges)
 {
   const SurfaceMesh& mesh = this->Mesh;
   const int pointCount = mesh.NumberOfPoints();
@@ -692,6 +691,7 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const std::vector<std:
   {
     int A, B; // directed as in its (first) triangle
     char Kind;
+    size_t Edge; // in the edge table
   };
   std::vector<Line> lines;
   double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
@@ -706,26 +706,21 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const std::vector<std:
   const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
     (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
   const double sharp = std::cos(FeatureAngleDegrees * 3.14159265358979323846 / 180.0);
-  for (size_t u = 0; u < keys.size();)
+  for (size_t edge = 0; edge < edges.NumberOfEdges(); ++edge)
   {
-    size_t end = u + 1;
-    while (end < keys.size() && keys[end] == keys[u])
-    {
-      ++end;
-    }
-    const int t = triangles[u], e = locals[u];
+    const EdgeTable::Range uses = edges.Edge(edge);
+    const int t = uses.begin()->Triangle, e = uses.begin()->Local;
     const int a = mesh.Triangles[t][e], b = mesh.Triangles[t][(e + 1) % 3];
-    if (end - u == 1)
+    if (uses.size() == 1)
     {
-      lines.push_back({ a, b, 1 });
+      lines.push_back({ a, b, 1, edge });
     }
-    else if (end - u == 2 &&
+    else if (uses.size() == 2 &&
       Dot(&this->Normals[3 * static_cast<size_t>(t)],
-        &this->Normals[3 * static_cast<size_t>(triangles[u + 1])]) < sharp)
+        &this->Normals[3 * static_cast<size_t>((uses.begin() + 1)->Triangle)]) < sharp)
     {
-      lines.push_back({ a, b, 2 });
+      lines.push_back({ a, b, 2, edge });
     }
-    u = end;
   }
   // Feature lines shorter than the threshold are dropped (joined through shared points).
   std::vector<int> chain(pointCount);
@@ -793,8 +788,6 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const std::vector<std:
     return std::sqrt((b[3] - b[0]) * (b[3] - b[0]) + (b[4] - b[1]) * (b[4] - b[1]) +
       (b[5] - b[2]) * (b[5] - b[2]));
   };
-  std::vector<std::uint64_t> kept; // keys of the edges that pin
-  std::vector<char> kindOfKept;
   std::vector<int> degree(pointCount, 0);
   std::vector<int> neighbor1(pointCount, -1), neighbor2(pointCount, -1);
   for (const Line& line : lines)
@@ -804,26 +797,15 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const std::vector<std:
     {
       continue;
     }
-    kept.push_back((static_cast<std::uint64_t>(std::min(line.A, line.B)) << 32) |
-      static_cast<std::uint32_t>(std::max(line.A, line.B)));
-    kindOfKept.push_back(line.Kind);
+    for (const EdgeUse& use : edges.Edge(line.Edge))
+    {
+      this->OnMeshBoundary[use.Triangle][use.Local] = line.Kind; // the edge pins
+    }
     for (int end = 0; end < 2; ++end)
     {
       const int p = end ? line.B : line.A, q = end ? line.A : line.B;
       (neighbor1[p] < 0 ? neighbor1[p] : neighbor2[p]) = q;
       ++degree[p];
-    }
-  }
-  // Mark the pinning edges of every triangle (kept is in key order: keys were sorted).
-  for (size_t u = 0, k = 0; u < keys.size() && k < kept.size(); ++u)
-  {
-    while (k < kept.size() && kept[k] < keys[u])
-    {
-      ++k;
-    }
-    if (k < kept.size() && kept[k] == keys[u])
-    {
-      this->OnMeshBoundary[triangles[u]][locals[u]] = kindOfKept[k];
     }
   }
   const double cosine = std::cos(CornerAngleDegrees * 3.14159265358979323846 / 180.0);
@@ -861,9 +843,6 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
   const int triangleCount = mesh.NumberOfTriangles();
   d.Normals.assign(3 * static_cast<size_t>(triangleCount), 0.0);
   d.OnMeshBoundary.assign(triangleCount, { 0, 0, 0 });
-  // Every triangle edge once per triangle, sorted by its points: the uses of an edge adjoin.
-  std::vector<std::pair<std::uint64_t, int>> uses;
-  uses.reserve(3 * static_cast<size_t>(triangleCount));
   for (int t = 0; t < triangleCount; ++t)
   {
     const auto& tri = mesh.Triangles[t];
@@ -879,33 +858,21 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
     {
       n[k] = length > 0.0 ? n[k] / length : 0.0;
     }
-    for (int e = 0; e < 3; ++e)
-    {
-      const int p = tri[e], q = tri[(e + 1) % 3];
-      uses.emplace_back((static_cast<std::uint64_t>(std::min(p, q)) << 32) |
-          static_cast<std::uint32_t>(std::max(p, q)),
-        3 * t + e);
-    }
   }
-  std::sort(uses.begin(), uses.end());
-  std::vector<std::uint64_t> keys(uses.size());
-  std::vector<int> triangles(uses.size()), locals(uses.size());
-  for (size_t u = 0; u < uses.size(); ++u)
-  {
-    keys[u] = uses[u].first;
-    triangles[u] = uses[u].second / 3;
-    locals[u] = uses[u].second % 3;
-  }
-  d.FindBordersAndFeatures(keys, triangles, locals);
+  const EdgeTable edges(mesh.Triangles);
+  d.FindBordersAndFeatures(edges);
   // The triangle across each edge (edges of exactly two triangles), for the dual's components.
   d.Adjacent.assign(triangleCount, { -1, -1, -1 });
-  for (size_t u = 0; u + 1 < keys.size(); ++u)
+  for (int t = 0; t < triangleCount; ++t)
   {
-    if (keys[u] == keys[u + 1] && (u + 2 >= keys.size() || keys[u + 2] != keys[u]) &&
-      (u == 0 || keys[u - 1] != keys[u]))
+    for (int e = 0; e < 3; ++e)
     {
-      d.Adjacent[triangles[u]][locals[u]] = triangles[u + 1];
-      d.Adjacent[triangles[u + 1]][locals[u + 1]] = triangles[u];
+      const EdgeTable::Range uses = edges.At(t, e);
+      if (uses.size() == 2)
+      {
+        const EdgeUse& first = *uses.begin();
+        d.Adjacent[t][e] = first.Triangle != t ? first.Triangle : (uses.begin() + 1)->Triangle;
+      }
     }
   }
   // Fixed blocks of triangles: the sums are added in the same order for any thread count.

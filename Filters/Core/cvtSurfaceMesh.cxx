@@ -1,5 +1,6 @@
 #include "cvtSurfaceMesh.h"
 
+#include "cvtEdgeTable.h"
 #include "cvtSampling.h"
 
 #include <algorithm>
@@ -14,11 +15,6 @@ namespace cvt
 
 namespace
 {
-std::uint64_t EdgeKey(int a, int b)
-{
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
-    static_cast<std::uint32_t>(std::max(a, b));
-}
 
 double TriangleArea(const SurfaceMesh& mesh, const std::array<int, 3>& t)
 {
@@ -49,79 +45,6 @@ struct UnionFind
   }
   void Join(int a, int b) { this->Parent[this->Find(a)] = this->Find(b); }
   std::vector<int> Parent;
-};
-
-/// The triangles on each undirected edge: (key, triangle, local edge) sorted by key, so one
-/// edge's uses are adjacent (much faster to build than a hash map of vectors).
-struct EdgeUse
-{
-  std::uint64_t Key;
-  int Triangle;
-  int Local;
-  bool operator<(const EdgeUse& other) const
-  {
-    return this->Key != other.Key ? this->Key < other.Key : this->Triangle < other.Triangle;
-  }
-};
-
-class EdgeTable
-{
-public:
-  struct Range
-  {
-    const EdgeUse* First;
-    const EdgeUse* Last;
-    const EdgeUse* begin() const { return this->First; }
-    const EdgeUse* end() const { return this->Last; }
-    size_t size() const { return static_cast<size_t>(this->Last - this->First); }
-    std::uint64_t Key() const { return this->First->Key; }
-  };
-
-  explicit EdgeTable(const std::vector<std::array<int, 3>>& triangles)
-  {
-    this->Uses.reserve(3 * triangles.size());
-    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
-    {
-      for (int e = 0; e < 3; ++e)
-      {
-        this->Uses.push_back({ EdgeKey(triangles[t][e], triangles[t][(e + 1) % 3]), t, e });
-      }
-    }
-    std::sort(this->Uses.begin(), this->Uses.end());
-    this->GroupOf.resize(this->Uses.size());
-    for (size_t u = 0; u < this->Uses.size(); ++u)
-    {
-      if (u == 0 || this->Uses[u].Key != this->Uses[u - 1].Key)
-      {
-        this->Starts.push_back(u);
-      }
-      this->GroupOf[3 * static_cast<size_t>(this->Uses[u].Triangle) + this->Uses[u].Local] =
-        this->Starts.size() - 1;
-    }
-    this->Starts.push_back(this->Uses.size());
-  }
-  /// The uses of edge `local` of triangle `t` (its own included).
-  Range At(int t, int local) const
-  {
-    return this->Edge(this->GroupOf[3 * static_cast<size_t>(t) + local]);
-  }
-  size_t NumberOfEdges() const { return this->Starts.size() - 1; }
-  Range Edge(size_t e) const
-  {
-    return { this->Uses.data() + this->Starts[e], this->Uses.data() + this->Starts[e + 1] };
-  }
-  Range Find(std::uint64_t key) const
-  {
-    const auto range = std::equal_range(this->Uses.begin(), this->Uses.end(), EdgeUse{ key, -1, 0 },
-      [](const EdgeUse& a, const EdgeUse& b) { return a.Key < b.Key; });
-    return { this->Uses.data() + (range.first - this->Uses.begin()),
-      this->Uses.data() + (range.second - this->Uses.begin()) };
-  }
-
-private:
-  std::vector<EdgeUse> Uses;
-  std::vector<size_t> Starts;
-  std::vector<size_t> GroupOf; // per (triangle, local edge)
 };
 
 std::string Where(const SurfaceMesh& mesh, int point)
