@@ -216,7 +216,7 @@ int vtkCVTSurfaceFilter::RequestData(
   const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
   if (!choice.UseOpenGL)
   {
-    if (!this->RunOnCPU(input, image, choice.Reason, outputVector))
+    if (!this->RunOnCPU(input, image, valid, choice.Reason, outputVector))
     {
       return 0;
     }
@@ -311,15 +311,10 @@ int vtkCVTSurfaceFilter::RequestData(
 
 //------------------------------------------------------------------------------
 int vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image,
-  const std::string& reason, vtkInformationVector* outputVector)
+  long long valid, const std::string& reason, vtkInformationVector* outputVector)
 {
   // About 60 triangles per site: the restricted cells are exact on the triangles, which differ
   // from the surface by their chords only.
-  long long valid = 0;
-  for (long long p = 0; p < image.NumberOfPixels(); ++p)
-  {
-    valid += image.IsValid(p) ? 1 : 0;
-  }
   const double wanted = std::max(20000.0, 60.0 * this->NumberOfSites);
   const int stride = std::max(1, static_cast<int>(std::floor(std::sqrt(2.0 * valid / wanted))));
   std::vector<double> coordinates;

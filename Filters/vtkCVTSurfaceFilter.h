@@ -127,9 +127,12 @@ protected:
   int Engine = AUTO;
   std::string ContextDescription;
 
-  /** The CPU engine's run: the geometry image as a mesh through vtkCVTRemeshFilter. */
-  int RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image, const std::string& reason,
-    vtkInformationVector* outputVector);
+  /**
+   * The CPU engine's run: the geometry image (with `valid` pixels in its mask) as a mesh through
+   * vtkCVTRemeshFilter.
+   */
+  int RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image, long long valid,
+    const std::string& reason, vtkInformationVector* outputVector);
 
 private:
   vtkCVTSurfaceFilter(const vtkCVTSurfaceFilter&) = delete;
