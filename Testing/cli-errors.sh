@@ -72,6 +72,11 @@ expect_error "cvt: NumberOfSites is 2; a remesh needs at least 3" surface --inpu
 if [ "$(grep -cv '^cvt: warning' "$T/log")" -ne 1 ] || grep -q "ERROR: In\|vtkExecutive" "$T/log"; then
   echo "the error was not one clean line:"; cat "$T/log"; bad=1
 fi
+# An explicit engine is used and named.
+if ! env -u DISPLAY "$CVT" image --engine cpu --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1 ||
+  ! grep -q "engine: CPU (asked for the CPU)" "$T/log"; then
+  echo "--engine cpu was not used or not reported:"; cat "$T/log"; bad=1
+fi
 # No OpenGL context at all: Auto runs on the CPU and says why; an explicit OpenGL is an error.
 if ! CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
   echo "Auto did not fall back to the CPU without OpenGL:"; cat "$T/log"; bad=1

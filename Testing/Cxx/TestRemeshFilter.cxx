@@ -345,6 +345,59 @@ TEST(RemeshFilter, SameSeedSameResultAndAbortStops)
   EXPECT_NE(text.str().find("NumberOfSites: 200"), std::string::npos);
 }
 
+TEST(RemeshFilter, OptionsTakeEffect)
+{
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  const auto run = [&sphere](int method, int seed, double tolerance, double gradientTolerance,
+                     int corrections, const char* density)
+  {
+    auto filter = vtkSmartPointer<vtkCVTRemeshFilter>::New();
+    filter->SetInputData(sphere);
+    filter->SetNumberOfSites(150);
+    filter->SetMethod(method);
+    filter->SetRandomSeed(seed);
+    filter->SetMaximumNumberOfIterations(40);
+    filter->SetTolerance(tolerance);
+    filter->SetGradientTolerance(gradientTolerance);
+    filter->SetNumberOfCorrections(corrections);
+    filter->SetDensityArray(density);
+    filter->Update();
+    return filter;
+  };
+  const auto reason = [](vtkCVTRemeshFilter* f)
+  {
+    return f->GetSitesOutput()
+      ->GetFieldData()
+      ->GetAbstractArray("StopReason")
+      ->GetVariantValue(0)
+      .ToString();
+  };
+  const auto energy = [](vtkCVTRemeshFilter* f, vtkIdType row)
+  { return f->GetHistoryOutput()->GetValueByName(row, "energy").ToDouble(); };
+  auto lbfgs = run(vtkCVTRemeshFilter::LBFGS, 1, 0.0, 0.0, 7, "");
+  auto lloyd = run(vtkCVTRemeshFilter::LLOYD, 1, 0.0, 0.0, 7, "");
+  ASSERT_EQ(lbfgs->GetHistoryOutput()->GetNumberOfRows(), 41);
+  ASSERT_EQ(lloyd->GetHistoryOutput()->GetNumberOfRows(), 41);
+  // Both start with the same five Lloyd steps, then L-BFGS goes its own way.
+  EXPECT_EQ(energy(lbfgs, 5), energy(lloyd, 5));
+  EXPECT_NE(energy(lbfgs, 20), energy(lloyd, 20));
+  // Another seed, other sites.
+  auto other = run(vtkCVTRemeshFilter::LBFGS, 2, 0.0, 0.0, 7, "");
+  EXPECT_NE(other->GetSitesOutput()->GetPoint(0)[0], lbfgs->GetSitesOutput()->GetPoint(0)[0]);
+  // One correction takes another path than seven.
+  auto one = run(vtkCVTRemeshFilter::LBFGS, 1, 0.0, 0.0, 1, "");
+  EXPECT_NE(energy(one, 20), energy(lbfgs, 20));
+  // The stop rules.
+  auto loose = run(vtkCVTRemeshFilter::LBFGS, 1, 1e-2, 0.0, 7, "");
+  EXPECT_LT(loose->GetHistoryOutput()->GetNumberOfRows(), 41);
+  EXPECT_EQ(reason(loose), "relative energy decrease below tolerance");
+  auto gradient = run(vtkCVTRemeshFilter::LBFGS, 1, 0.0, 0.3, 7, "");
+  EXPECT_EQ(reason(gradient), "gradient tolerance reached");
+  // ParaView's "Uniform density" is no array at all.
+  auto uniform = run(vtkCVTRemeshFilter::LBFGS, 1, 0.0, 0.0, 7, "Uniform density");
+  EXPECT_EQ(energy(uniform, 40), energy(lbfgs, 40));
+}
+
 TEST(RemeshFilter, BadInputGivesAClearErrorAndEmptyOutputs)
 {
   const auto expectError =
@@ -406,4 +459,9 @@ TEST(RemeshFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   expectError(dense, "negative", 100, "Bad");
   expectError(dense, "no one-component point array 'Missing'", 100, "Missing");
   expectError(Sphere(), "at least 3", 2);
+  // Polygons naming points that do not exist (a damaged file).
+  vtkNew<vtkPolyData> dangling;
+  dangling->DeepCopy(Sphere());
+  dangling->GetPolys()->GetConnectivityArray()->SetTuple1(4, dangling->GetNumberOfPoints() + 7);
+  expectError(dangling, "polygons are corrupt");
 }
