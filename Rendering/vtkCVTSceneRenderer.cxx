@@ -27,9 +27,10 @@
 vtkStandardNewMacro(vtkCVTSceneRenderer);
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, vtkPolyData* sites)
+vtkImageData* vtkCVTSceneRenderer::Render(vtkImageData* labels, vtkPolyData* sites)
 {
   this->LastError.clear();
+  this->Picture = nullptr;
   if (!labels || !labels->GetPointData()->GetArray("SiteId"))
   {
     this->LastError = "the labels image has no SiteId array";
@@ -108,8 +109,7 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Render(vtkImageData* labels, 
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Snapshot(
-  vtkRenderer* renderer, int width, int height)
+vtkImageData* vtkCVTSceneRenderer::Snapshot(vtkRenderer* renderer, int width, int height)
 {
   vtkNew<vtkCVTOpenGLContext> context;
   if (!context->Initialize())
@@ -128,17 +128,19 @@ vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::Snapshot(
   renderer->ReleaseGraphicsResources(window);
   context->RestorePrevious();
 
-  auto picture = vtkSmartPointer<vtkImageData>::New();
-  picture->SetDimensions(width, height, 1);
+  // A new image each time: a caller may still hold the previous picture.
+  this->Picture = vtkSmartPointer<vtkImageData>::New();
+  this->Picture->SetDimensions(width, height, 1);
   pixels->SetName("RGB");
-  picture->GetPointData()->SetScalars(pixels);
-  return picture;
+  this->Picture->GetPointData()->SetScalars(pixels);
+  return this->Picture;
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkImageData> vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
+vtkImageData* vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
 {
   this->LastError.clear();
+  this->Picture = nullptr;
   if (!mesh || mesh->GetNumberOfPolys() == 0)
   {
     this->LastError = "the mesh has no triangles";
@@ -200,4 +202,5 @@ void vtkCVTSceneRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Size << "\n";
   os << indent << "ShowCells: " << this->ShowCells << "\n";
   os << indent << "PointSize: " << this->PointSize << "\n";
+  os << indent << "Picture: " << (this->Picture ? "the last render's" : "(none)") << "\n";
 }

@@ -11,7 +11,7 @@
 
 #include "cvtRenderingModule.h" // for export macro
 #include "vtkObject.h"
-#include "vtkSmartPointer.h" // for return value
+#include "vtkSmartPointer.h" // for the picture
 
 #include <string> // for std::string
 
@@ -48,15 +48,20 @@ public:
   /**
    * Render `labels` (a 2D image with an int SiteId point array) and `sites` (vertices) into an
    * RGB image. Returns nullptr with a message in GetLastError() when there is no context.
+   *
+   * The picture belongs to this renderer and is replaced by its next Render or RenderMesh
+   * (hold it in a vtkSmartPointer, or in Python a variable, to keep it). A plain pointer, not
+   * a vtkSmartPointer, so that the Python wrappers of VTK 9.1 convert it as well as 9.2's.
    */
-  vtkSmartPointer<vtkImageData> Render(vtkImageData* labels, vtkPolyData* sites);
+  vtkImageData* Render(vtkImageData* labels, vtkPolyData* sites);
 
   /**
    * Render a surface mesh (a remesh) of any shape and size, seen mostly along the thinnest axis
    * of its bounding box and tilted, the longest axis across, each triangle in its own colour
-   * with its edges drawn, into an RGB image. nullptr when there is no context.
+   * with its edges drawn, into an RGB image. nullptr when there is no context. The picture
+   * belongs to this renderer, as with Render.
    */
-  vtkSmartPointer<vtkImageData> RenderMesh(vtkPolyData* mesh);
+  vtkImageData* RenderMesh(vtkPolyData* mesh);
   const std::string& GetLastError() const { return this->LastError; }
 
 protected:
@@ -67,13 +72,14 @@ private:
   vtkCVTSceneRenderer(const vtkCVTSceneRenderer&) = delete;
   void operator=(const vtkCVTSceneRenderer&) = delete;
 
-  /** Renders the renderer's props in a headless window and reads the pixels back. */
-  vtkSmartPointer<vtkImageData> Snapshot(vtkRenderer* renderer, int width, int height);
+  /** Renders the renderer's props in a headless window and reads the pixels into Picture. */
+  vtkImageData* Snapshot(vtkRenderer* renderer, int width, int height);
 
   int Size = 800;
   bool ShowCells = true;
   double PointSize = 4.0;
   std::string LastError;
+  vtkSmartPointer<vtkImageData> Picture; // the last picture, returned by Render/RenderMesh
 };
 
 #endif

@@ -22,6 +22,7 @@ packages=(
   libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
   libeigen3-dev liblbfgspp-dev libnanoflann-dev
   libgtest-dev googletest python3-matplotlib xvfb xauth
+  libvtk9.1 libvtk9.1-qt libtbb-dev
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -30,6 +31,17 @@ done
 if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get update
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+# Debian's standalone VTK 9.1, for the test of the VTK-only build (Testing/standalone-vtk.sh).
+# Its libraries install beside ParaView (above); its development and Python packages conflict
+# with ParaView's (python3-vtk9 against python3-paraview), so they are unpacked, not installed,
+# into a private prefix.
+standalone=build/standalone-vtk
+if [ ! -e "$standalone/prefix/usr/lib/x86_64-linux-gnu/cmake/vtk-9.1/vtk-config.cmake" ]; then
+  rm -rf "$standalone/debs" && mkdir -p "$standalone/debs"
+  (cd "$standalone/debs" && apt-get download libvtk9-dev libvtk9.1 libvtk9.1-qt python3-vtk9 vtk9)
+  for deb in "$standalone"/debs/*.deb; do dpkg-deb -x "$deb" "$standalone/prefix"; done
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release

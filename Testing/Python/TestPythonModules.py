@@ -1,5 +1,5 @@
 """/usr/bin/python3 test of the wrapped modules: import, a pipeline, bad input.
-Needs PYTHONPATH to the built package and python3-paraview."""
+Needs PYTHONPATH to the built package and the vtkmodules it was built against."""
 import sys
 
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
