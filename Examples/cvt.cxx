@@ -890,7 +890,8 @@ int RunRemesh(const Options& options)
               << "  remesh topology             " << topology(remesh, "") << "\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
-              << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed)\n"
+              << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
+              << Field(remesh, "SplitVertices") << " pinched vertices split)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "

@@ -334,6 +334,7 @@ int vtkCVTRemeshFilter::RequestData(
   cvtvtk::AddMeshQuality(remeshFields, quality);
   cvtvtk::AddFieldValue(remeshFields, "RemovedTriangles", remesh.RemovedTriangles);
   cvtvtk::AddFieldValue(remeshFields, "FilledHoles", remesh.FilledHoles);
+  cvtvtk::AddFieldValue(remeshFields, "SplitVertices", remesh.SplitVertices);
   const cvt::MeshTopology remeshTopology =
     cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
   AddTopology(remeshFields, "", remeshTopology);

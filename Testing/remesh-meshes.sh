@@ -32,6 +32,14 @@ for m in $MESHES; do
   if [ "$input" != "$remesh" ] || grep -q "topology differs" "$T/$m.log"; then
     echo "  the remesh's topology differs from the input's ($input)"; bad=1
   fi
+  # The independent count, after merging coincident points: no vertex where sheets only touch
+  # (not for the dirty mesh, whose input is itself non-manifold).
+  if [ -d "$CHECKS" ] && [ "$m" != dirty ]; then
+    independent() { /usr/bin/python3 "$CHECKS/mesh_topology.py" "$1" | grep -o 'components=.*'; }
+    if [ "$(independent "$T/meshes/$m.vtp")" != "$(independent "$out/remesh.vtp")" ]; then
+      echo "  independent topology: input $(independent "$T/meshes/$m.vtp"), remesh $(independent "$out/remesh.vtp")"; bad=1
+    fi
+  fi
   # Closed smooth inputs (no border, no crease) must give well-shaped triangles.
   angle=$(sed -n 's/^  smallest \/ largest angle *\([0-9.]*\) .*/\1/p' "$T/$m.log")
   case $m in sphere|noisy|genus2|genus3|dumbbell|twoparts)

@@ -1,6 +1,6 @@
 #include "cvtRemesh.h"
 
-#include "cvtSurfaceMesh.h" // for ComputeMeshTopology
+#include "cvtSurfaceMesh.h" // for TraceLoops, SplitPinchedPoints
 
 #include <algorithm>
 #include <cmath>
@@ -65,6 +65,46 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       directed[DirectedKey(t[e], t[(e + 1) % 3])] = 1;
     }
     kept.push_back(t);
+  }
+  // Two triangles on the same three sites (the two sides of a part thinner than the cells)
+  // close on each other: a pillow of no area, joined to the rest by no edge. Both go.
+  {
+    std::unordered_map<std::uint64_t, int> firstOn; // sorted site triple -> triangle
+    std::vector<char> drop(kept.size(), 0);
+    for (size_t k = 0; k < kept.size(); ++k)
+    {
+      std::array<int, 3> sorted = kept[k];
+      std::sort(sorted.begin(), sorted.end());
+      const std::uint64_t key = (static_cast<std::uint64_t>(sorted[0]) << 42) ^
+        (static_cast<std::uint64_t>(sorted[1]) << 21) ^ static_cast<std::uint64_t>(sorted[2]);
+      auto found = firstOn.emplace(key, static_cast<int>(k));
+      if (!found.second && !drop[found.first->second])
+      {
+        std::array<int, 3> other = kept[found.first->second];
+        std::sort(other.begin(), other.end());
+        if (other == sorted)
+        {
+          drop[k] = drop[found.first->second] = 1;
+        }
+      }
+    }
+    size_t last = 0;
+    for (size_t k = 0; k < kept.size(); ++k)
+    {
+      if (drop[k])
+      {
+        ++remesh.RemovedTriangles;
+        for (int e = 0; e < 3; ++e)
+        {
+          directed.erase(DirectedKey(kept[k][e], kept[k][(e + 1) % 3]));
+        }
+      }
+      else
+      {
+        kept[last++] = kept[k];
+      }
+    }
+    kept.resize(last);
   }
   // Holes: loops of edges with no twin. A loop along the input's border is part of the
   // surface; a short loop elsewhere is where cells met in a degenerate point: close it.
@@ -188,6 +228,18 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
         &remesh.SourceBarycentric[3 * t[widest]]);
       remesh.SourceTriangles[t[widest]] = dual.SurfaceTriangles[i];
     }
+  }
+  // Sheets that meet only at a vertex (a part thinner than the cells, a border touching
+  // itself) get a vertex each, so the remesh is manifold at its vertices too.
+  for (int v : SplitPinchedPoints(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles))
+  {
+    const size_t i = static_cast<size_t>(v);
+    remesh.Points.insert(remesh.Points.end(), &remesh.Points[3 * i], &remesh.Points[3 * i] + 3);
+    remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(),
+      &remesh.SourceBarycentric[3 * i], &remesh.SourceBarycentric[3 * i] + 3);
+    remesh.SourceTriangles.push_back(remesh.SourceTriangles[i]);
+    remesh.SiteIds.push_back(remesh.SiteIds[i]);
+    ++remesh.SplitVertices;
   }
   return remesh;
 }

@@ -22,11 +22,13 @@ struct Remesh
   std::vector<double> SourceBarycentric; // 3 per vertex, in that triangle
   int RemovedTriangles = 0;              // dropped to keep edges manifold
   int FilledHoles = 0;                   // small holes closed (cells meeting in a degenerate point)
+  int SplitVertices = 0;                 // pinched vertices given one copy per extra fan
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
 /// points (boundary points for cells on the border), triangles the restricted Delaunay ones;
-/// triangles that would make an edge non-manifold are dropped, and holes of at most
+/// triangles that would make an edge non-manifold are dropped, as are pairs on the same three
+/// sites, vertices where sheets meet are split, and holes of at most
 /// `maximumHole` edges are closed: those with a vertex off the input's border, and the shortest
 /// loops of border cells beyond the input's number of boundary loops.
 CVTCORE_EXPORT Remesh BuildRemesh(

@@ -55,64 +55,6 @@ std::string Where(const SurfaceMesh& mesh, int point)
   return text.str();
 }
 
-/// Splits every point whose triangles form several fans: the corners (triangle, point) of the
-/// two triangles of each edge are joined at the edge's end points, and each group of corners
-/// beyond a point's first becomes a copy of the point.
-int SplitNonManifoldPoints(SurfaceMesh& mesh, const EdgeTable& edges)
-{
-  const auto corner = [&mesh](int t, int p)
-  {
-    const auto& tri = mesh.Triangles[t];
-    return 3 * t + (tri[0] == p ? 0 : (tri[1] == p ? 1 : 2));
-  };
-  UnionFind fans(3 * mesh.Triangles.size());
-  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
-  {
-    const EdgeTable::Range edge = edges.Edge(e);
-    if (edge.size() != 2)
-    {
-      continue;
-    }
-    const int t1 = edge.begin()->Triangle, t2 = (edge.begin() + 1)->Triangle;
-    for (int p : { static_cast<int>(edge.Key() >> 32), static_cast<int>(edge.Key() & 0xffffffffu) })
-    {
-      fans.Join(corner(t1, p), corner(t2, p));
-    }
-  }
-  std::vector<int> firstFan(mesh.NumberOfPoints(), -1);
-  std::unordered_map<int, int> copyOfFan; // only for the fans of non-manifold points
-  int split = 0;
-  for (int t = 0; t < mesh.NumberOfTriangles(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      int& p = mesh.Triangles[t][k];
-      const int fan = fans.Find(3 * t + k);
-      if (firstFan[p] < 0)
-      {
-        firstFan[p] = fan;
-      }
-      else if (firstFan[p] != fan)
-      {
-        auto found = copyOfFan.emplace(fan, mesh.NumberOfPoints());
-        if (found.second)
-        {
-          mesh.Points.insert(mesh.Points.end(), mesh.Point(p), mesh.Point(p) + 3);
-          if (!mesh.Density.empty())
-          {
-            mesh.Density.push_back(mesh.Density[p]);
-          }
-          mesh.SourceIds.push_back(mesh.SourceIds[p]);
-          firstFan.push_back(fan);
-          ++split;
-        }
-        p = found.first->second;
-      }
-    }
-  }
-  return split;
-}
-
 double SignedVolume(const SurfaceMesh& mesh, const std::vector<int>& triangles)
 {
   double volume = 0.0;
@@ -188,6 +130,58 @@ std::string CheckSurfaceMesh(const SurfaceMesh& mesh)
     largest = std::max(largest, d);
   }
   return largest > 0.0 ? std::string() : "the density array is zero everywhere";
+}
+
+std::vector<int> SplitPinchedPoints(int numberOfPoints, std::vector<std::array<int, 3>>& triangles)
+{
+  // Corners (triangle, point) of the two triangles of each edge are joined at the edge's end
+  // points; each group of corners beyond a point's first becomes a copy of the point.
+  const auto corner = [&triangles](int t, int p)
+  {
+    const auto& tri = triangles[t];
+    return 3 * t + (tri[0] == p ? 0 : (tri[1] == p ? 1 : 2));
+  };
+  const EdgeTable edges(triangles);
+  UnionFind fans(3 * triangles.size());
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
+  {
+    const EdgeTable::Range edge = edges.Edge(e);
+    if (edge.size() != 2)
+    {
+      continue;
+    }
+    const int t1 = edge.begin()->Triangle, t2 = (edge.begin() + 1)->Triangle;
+    for (int p : { static_cast<int>(edge.Key() >> 32), static_cast<int>(edge.Key() & 0xffffffffu) })
+    {
+      fans.Join(corner(t1, p), corner(t2, p));
+    }
+  }
+  std::vector<int> firstFan(static_cast<size_t>(numberOfPoints), -1);
+  std::unordered_map<int, int> copyOfFan; // only for the fans of pinched points
+  std::vector<int> copied;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      int& p = triangles[t][k];
+      const int fan = fans.Find(3 * t + k);
+      if (firstFan[p] < 0)
+      {
+        firstFan[p] = fan;
+      }
+      else if (firstFan[p] != fan)
+      {
+        auto found = copyOfFan.emplace(fan, numberOfPoints + static_cast<int>(copied.size()));
+        if (found.second)
+        {
+          copied.push_back(p);
+          firstFan.push_back(fan);
+        }
+        p = found.first->second;
+      }
+    }
+  }
+  return copied;
 }
 
 std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
@@ -395,7 +389,17 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
     }
     report.FlippedTriangles += flipped;
   }
-  report.SplitPoints = SplitNonManifoldPoints(mesh, edges);
+  const std::vector<int> copied = SplitPinchedPoints(mesh.NumberOfPoints(), mesh.Triangles);
+  for (int p : copied)
+  {
+    mesh.Points.insert(mesh.Points.end(), mesh.Point(p), mesh.Point(p) + 3);
+    if (!mesh.Density.empty())
+    {
+      mesh.Density.push_back(mesh.Density[p]);
+    }
+    mesh.SourceIds.push_back(mesh.SourceIds[p]);
+  }
+  report.SplitPoints = static_cast<int>(copied.size());
   // Unused points.
   std::vector<int> renumber(mesh.NumberOfPoints(), -1);
   int used = 0;

@@ -50,6 +50,12 @@ struct MeshRepairReport
 /// non-orientable component (with where), no triangle left.
 CVTCORE_EXPORT std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report);
 
+/// Makes an edge-manifold triangle list vertex-manifold: a point whose triangles form several
+/// fans (sheets meeting only there) gets a copy for each fan beyond its first, numbered from
+/// `numberOfPoints` on. Returns, for each copy in order, the point it copies.
+CVTCORE_EXPORT std::vector<int> SplitPinchedPoints(
+  int numberOfPoints, std::vector<std::array<int, 3>>& triangles);
+
 /// Checks coordinates and density: "" or what is wrong (NaN or infinite coordinates, NaN,
 /// infinite, negative or all-zero density, wrong density size).
 CVTCORE_EXPORT std::string CheckSurfaceMesh(const SurfaceMesh& mesh);

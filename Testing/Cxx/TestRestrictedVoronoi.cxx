@@ -387,6 +387,43 @@ TEST(RestrictedVoronoi, OpenSquareRemeshKeepsItsBorder)
   EXPECT_EQ(corners, 4);
 }
 
+TEST(RestrictedVoronoi, RemeshOfThinPartsIsManifold)
+{
+  // Dual triangles as a part thinner than the cells gives them: two closed tetrahedra whose
+  // cells meet only at the shared site 0 (a pinch), and the two sides of a sliver of three
+  // sites (two triangles on the same sites, a pillow of no area).
+  const double points[10][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { -1, 0, 0 },
+    { 0, -1, 0 }, { 0, 0, -1 }, { 5, 5, 5 }, { 6, 5, 5 }, { 5, 6, 5 } };
+  cvt::RestrictedDual dual;
+  for (int v = 0; v < 10; ++v)
+  {
+    dual.Sites.push_back(v);
+    dual.SurfacePoints.insert(dual.SurfacePoints.end(), points[v], points[v] + 3);
+    dual.SurfaceTriangles.push_back(0);
+    dual.SurfaceBarycentric.insert(dual.SurfaceBarycentric.end(), { 1.0, 0.0, 0.0 });
+    dual.OnBoundary.push_back(0);
+    dual.Pinned.push_back(0);
+    dual.BoundaryPoints.insert(dual.BoundaryPoints.end(), points[v], points[v] + 3);
+    dual.BoundaryTriangles.push_back(-1);
+    dual.BoundaryBarycentric.insert(dual.BoundaryBarycentric.end(), { 0.0, 0.0, 0.0 });
+  }
+  dual.Triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, 2 }, // first tetrahedron
+    { 0, 5, 4 }, { 0, 4, 6 }, { 4, 5, 6 }, { 0, 6, 5 },                  // second, at site 0
+    { 7, 8, 9 }, { 7, 9, 8 } };                                          // the pillow
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 0);
+  EXPECT_EQ(remesh.RemovedTriangles, 2);
+  EXPECT_EQ(remesh.SplitVertices, 1);
+  ASSERT_EQ(remesh.Triangles.size(), 8u);
+  ASSERT_EQ(remesh.SiteIds.size(), 8u); // 7 sites, site 0 twice
+  EXPECT_EQ(remesh.SiteIds[7], 0);
+  EXPECT_EQ(remesh.Points.size(), 3 * remesh.SiteIds.size());
+  EXPECT_EQ(remesh.SourceTriangles.size(), remesh.SiteIds.size());
+  const cvt::MeshTopology parts = cvt::ComputeMeshTopology(8, remesh.Triangles);
+  EXPECT_EQ(parts.Components, 2);
+  EXPECT_EQ(parts.BoundaryLoops, 0);
+  EXPECT_EQ(parts.EulerCharacteristic, 4); // two spheres
+}
+
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
 {
   // A square of two triangles, one flipped, plus a duplicate, a degenerate and an unused point.
