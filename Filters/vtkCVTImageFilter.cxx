@@ -29,6 +29,7 @@
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -90,6 +91,8 @@ vtkCVTImageFilter::vtkCVTImageFilter()
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(4);
+  // What progress bars show (ParaView: the label the user knows, not the class name).
+  this->SetProgressText("CVT Image");
   // No density array by default: uniform density.
 }
 
@@ -196,6 +199,14 @@ int vtkCVTImageFilter::RequestUpdateExtent(
 int vtkCVTImageFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  return cvtvtk::RunRequest(this, outputVector, this->FailPipelineOnError, this->LastFailure,
+    this->LastRunFailed, [&] { return this->Compute(inputVector, outputVector); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTImageFilter::Compute(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkImageData* image = vtkImageData::GetData(inputVector[0], 0);
   vtkPointSet* initialSites = vtkPointSet::GetData(inputVector[1], 0);
   vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
@@ -212,7 +223,7 @@ int vtkCVTImageFilter::RequestData(
   if (!image || image->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("The input image is empty; give a 2D image with at least one pixel.");
-    return 0;
+    return false;
   }
   int dims[3];
   image->GetDimensions(dims);
@@ -220,7 +231,7 @@ int vtkCVTImageFilter::RequestData(
   {
     vtkErrorMacro("The input image is 3D (" << dims[0] << " x " << dims[1] << " x " << dims[2]
                                             << "); give a 2D image in the XY plane (one slice).");
-    return 0;
+    return false;
   }
   double spacing[3], origin[3];
   image->GetSpacing(spacing);
@@ -229,7 +240,7 @@ int vtkCVTImageFilter::RequestData(
   {
     vtkErrorMacro("The input image has a non-positive spacing (" << spacing[0] << ", " << spacing[1]
                                                                  << "); give positive spacings.");
-    return 0;
+    return false;
   }
   const int* extent = image->GetExtent();
   cvt::Grid grid;
@@ -254,30 +265,49 @@ int vtkCVTImageFilter::RequestData(
     {
       vtkErrorMacro("The density array '"
         << name << "' is not a point array of the input image; choose one of its point arrays.");
-      return 0;
+      return false;
     }
-    if (array->GetNumberOfComponents() != 1)
+    const int components = array->GetNumberOfComponents();
+    if (components != 1 && components != 3 && components != 4)
     {
       vtkErrorMacro("The density array '"
-        << name << "' has " << array->GetNumberOfComponents()
-        << " components; a density needs exactly one (convert colours to luminance first).");
-      return 0;
+        << name << "' has " << components
+        << " components; a density needs one (or three or four: a colour, whose luminance is "
+           "taken).");
+      return false;
     }
     if (array->GetNumberOfTuples() != grid.NumberOfPixels())
     {
       vtkErrorMacro("The density array '" << name << "' does not hold one value per pixel.");
-      return 0;
+      return false;
     }
     for (vtkIdType p = 0; p < array->GetNumberOfTuples(); ++p)
     {
-      density[p] = static_cast<float>(array->GetComponent(p, 0));
+      // Colours (RGB, RGBA pictures) give their luminance (ITU-R BT.601, as the CLI).
+      density[p] = static_cast<float>(components == 1 ? array->GetComponent(p, 0)
+                                                      : 0.299 * array->GetComponent(p, 0) +
+            0.587 * array->GetComponent(p, 1) + 0.114 * array->GetComponent(p, 2));
+    }
+    if (this->InvertDensity)
+    {
+      // Dark = dense: from the type's largest value for integer arrays (255 for pictures),
+      // else from the array's largest value.
+      double top = *std::max_element(density.begin(), density.end());
+      if (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE)
+      {
+        top = array->GetDataTypeMax();
+      }
+      for (float& value : density)
+      {
+        value = static_cast<float>(top - value);
+      }
     }
   }
   const std::string densityError = cvt::CheckDensity(grid, density);
   if (!densityError.empty())
   {
     vtkErrorMacro("Bad density: " << densityError << ".");
-    return 0;
+    return false;
   }
 
   // --- The initial sites.
@@ -299,14 +329,14 @@ int vtkCVTImageFilter::RequestData(
     if (this->NumberOfSites <= 0)
     {
       vtkErrorMacro("NumberOfSites is " << this->NumberOfSites << "; ask for at least one site.");
-      return 0;
+      return false;
     }
     if (this->NumberOfSites > grid.NumberOfPixels())
     {
       vtkErrorMacro("NumberOfSites (" << this->NumberOfSites << ") exceeds the "
                                       << grid.NumberOfPixels()
                                       << " pixels of the image; use fewer sites or a finer image.");
-      return 0;
+      return false;
     }
     sites = cvt::SampleSites(grid, densityChosen ? density : std::vector<float>(),
       this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed));
@@ -315,7 +345,7 @@ int vtkCVTImageFilter::RequestData(
   if (!sitesError.empty())
   {
     vtkErrorMacro("Bad initial sites: " << sitesError << ".");
-    return 0;
+    return false;
   }
 
   // --- The optimiser, on the engine chosen.
@@ -349,13 +379,13 @@ int vtkCVTImageFilter::RequestData(
   if (!optimized)
   {
     vtkErrorMacro("" << what << (ok ? error : engine.GetLastError()) << ".");
-    return 0;
+    return false;
   }
   std::vector<int> labels;
   if (!engine.GetLabels(labels))
   {
     vtkErrorMacro("" << what << engine.GetLastError() << ".");
-    return 0;
+    return false;
   }
   gpu->ReleaseGraphicsResources();
   if (result.StopReason.rfind("no sufficient decrease", 0) == 0)
@@ -404,19 +434,21 @@ int vtkCVTImageFilter::RequestData(
   dualOut->GetPointData()->AddArray(dualIds);
 
   cvtvtk::FillHistoryTable(historyOut, result.History);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkCVTImageFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "FailPipelineOnError: " << this->FailPipelineOnError << "\n";
   os << indent << "Method: " << (this->Method == LLOYD ? "Lloyd" : "L-BFGS") << "\n";
   os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
   os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
   os << indent << "ComputeExactEnergy: " << this->ComputeExactEnergy << "\n";
   os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "InvertDensity: " << this->InvertDensity << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "AdaptiveJumpFlooding: " << this->AdaptiveJumpFlooding << "\n";

@@ -38,6 +38,7 @@
 
 #include "cvtFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkTimeStamp.h" // for LastFailure
 
 #include <string> // for std::string
 
@@ -76,6 +77,18 @@ public:
   /** Seed of the initial site sampling (default 1): the same seed gives the same output. */
   vtkSetMacro(RandomSeed, int);
   vtkGetMacro(RandomSeed, int);
+  ///@}
+
+  ///@{
+  /**
+   * Use the largest value minus the density instead of the density (off by default): dark
+   * pixels of a picture become dense, as stippling needs. The largest value is the array
+   * type's for integer arrays (255 for 8-bit pictures), else the array's own. No effect with
+   * a uniform density.
+   */
+  vtkSetMacro(InvertDensity, bool);
+  vtkGetMacro(InvertDensity, bool);
+  vtkBooleanMacro(InvertDensity, bool);
   ///@}
 
   ///@{
@@ -175,6 +188,18 @@ public:
   /** Description of the OpenGL context the last run used (empty before a run or on the CPU). */
   const std::string& GetContextDescription() const { return this->ContextDescription; }
 
+  ///@{
+  /**
+   * What RequestData returns after bad input or a failed run (the error is reported and the
+   * outputs are empty either way): 0 when on (default, VTK's convention: Update() fails), 1
+   * when off, so that ParaView shows the empty outputs (clears the view) and prints the error
+   * once instead of on every view's update. The ParaView plugin turns it off.
+   */
+  vtkSetMacro(FailPipelineOnError, bool);
+  vtkGetMacro(FailPipelineOnError, bool);
+  vtkBooleanMacro(FailPipelineOnError, bool);
+  ///@}
+
 protected:
   vtkCVTImageFilter();
   ~vtkCVTImageFilter() override = default;
@@ -184,14 +209,20 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** RequestData's work: false after an error (reported with vtkErrorMacro). */
+  bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
 
   int Method = LBFGS;
+  bool FailPipelineOnError = true;
+  vtkTimeStamp LastFailure; // when the last failed run ended (see FailPipelineOnError)
+  bool LastRunFailed = false;
   int NumberOfCorrections = 7;
   double GradientTolerance = 0.0;
   bool ComputeExactEnergy = false;
   int NumberOfSites = 1000;
   int RandomSeed = 1;
   int MaximumNumberOfIterations = 100;
+  bool InvertDensity = false;
   double Tolerance = 1e-6;
   bool AdaptiveJumpFlooding = true;
   bool SplitBoundaryPixels = true;

@@ -5,12 +5,15 @@
 #include "cvtEngine.h"
 #include "cvtQuality.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
+#include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -179,6 +182,46 @@ void WriteGeometryImage(const cvt::GeometryImage& image, vtkImageData* output)
   AddFieldValue(fields, "MinimumAreaWeight", minimum);
   AddFieldValue(fields, "MaximumAreaWeight", maximum);
   AddFieldValue(fields, "TotalArea", total);
+}
+
+//------------------------------------------------------------------------------
+bool ChangedSince(vtkAlgorithm* self, const vtkTimeStamp& time)
+{
+  // Algorithms, not their data: ParaView re-executes a reader for each view's request, which
+  // renews the data's time stamps without any change.
+  if (self->GetMTime() > time.GetMTime())
+  {
+    return true;
+  }
+  for (int port = 0; port < self->GetNumberOfInputPorts(); ++port)
+  {
+    for (int c = 0; c < self->GetNumberOfInputConnections(port); ++c)
+    {
+      vtkAlgorithm* upstream = self->GetInputAlgorithm(port, c);
+      if (upstream && ChangedSince(upstream, time))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+int FinishRequest(vtkInformationVector* outputs, bool succeeded, bool failPipeline)
+{
+  if (succeeded)
+  {
+    return 1;
+  }
+  for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
+  {
+    if (vtkDataObject* output = vtkDataObject::GetData(outputs, port))
+    {
+      output->Initialize();
+    }
+  }
+  return failPipeline ? 0 : 1;
 }
 
 } // namespace cvtvtk

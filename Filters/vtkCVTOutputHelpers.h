@@ -9,10 +9,13 @@
 
 #include "vtkIntArray.h"     // for SiteIdArray
 #include "vtkSmartPointer.h" // for return values
+#include "vtkTimeStamp.h"    // for RequestOutcome
 
+class vtkAlgorithm;
 class vtkFieldData;
 class vtkImageData;
 class vtkInformation;
+class vtkInformationVector;
 class vtkPoints;
 class vtkPolyData;
 class vtkTable;
@@ -46,6 +49,33 @@ void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality);
 
 /// Asks the upstream image for its whole extent: every pixel takes part in every cell.
 void RequestWholeExtent(vtkInformation* inputInformation);
+
+/// Whether the algorithm or one upstream of it was modified after `time`.
+bool ChangedSince(vtkAlgorithm* self, const vtkTimeStamp& time);
+
+/// 1 on success; else empties every output and returns 0, or 1 when `failPipeline` is off.
+int FinishRequest(vtkInformationVector* outputs, bool succeeded, bool failPipeline);
+
+/// What a CVT filter's RequestData returns around its work (a callable returning false after
+/// reporting an error): on failure every output is emptied and the result is 0 (VTK's
+/// convention: Update() reports the failure), or 1 when `failPipeline` is off, which ParaView
+/// needs to show the emptied outputs. Off, a request with nothing changed since a failure
+/// (neither the filter nor an algorithm upstream: each of ParaView's views updates its port,
+/// and an empty image never satisfies its extent) repeats neither the work nor the error.
+/// `lastFailure` and `failed` are the filter's memory of its last run.
+template<class Work>
+int RunRequest(vtkAlgorithm* self, vtkInformationVector* outputs, bool failPipeline,
+  vtkTimeStamp& lastFailure, bool& failed, Work&& work)
+{
+  const bool repeat = !failPipeline && failed && !ChangedSince(self, lastFailure);
+  const bool succeeded = !repeat && work();
+  if (!succeeded && !repeat)
+  {
+    lastFailure.Modified();
+  }
+  failed = !succeeded;
+  return FinishRequest(outputs, succeeded, failPipeline);
+}
 
 /// Columns iteration, evaluations, energy, gradient_norm, seconds.
 void FillHistoryTable(vtkTable* table, const std::vector<cvt::HistoryEntry>& history);

@@ -91,6 +91,8 @@ vtkCVTRemeshFilter::vtkCVTRemeshFilter()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(4);
+  // What progress bars show (ParaView: the label the user knows, not the class name).
+  this->SetProgressText("CVT Remesh");
 }
 
 vtkPolyData* vtkCVTRemeshFilter::GetSitesOutput()
@@ -121,6 +123,14 @@ int vtkCVTRemeshFilter::FillOutputPortInformation(int port, vtkInformation* info
 int vtkCVTRemeshFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  return cvtvtk::RunRequest(this, outputVector, this->FailPipelineOnError, this->LastFailure,
+    this->LastRunFailed, [&] { return this->Compute(inputVector, outputVector); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTRemeshFilter::Compute(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
   vtkPolyData* labelsOut = vtkPolyData::GetData(outputVector, LabelsPort);
@@ -140,12 +150,12 @@ int vtkCVTRemeshFilter::RequestData(
   if (!input || input->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("The input mesh is empty; give a surface made of triangles or polygons.");
-    return 0;
+    return false;
   }
   if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     vtkErrorMacro("The input has no polygons (only points or lines); give a surface mesh.");
-    return 0;
+    return false;
   }
   // Corrupt files can name points that do not exist; VTK's cleaning would crash on them.
   for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
@@ -161,7 +171,7 @@ int vtkCVTRemeshFilter::RequestData(
     {
       vtkErrorMacro("The input's polygons are corrupt: they name points outside 0.."
         << input->GetNumberOfPoints() - 1 << " (a damaged file?).");
-      return 0;
+      return false;
     }
   }
   vtkSmartPointer<vtkPolyData> triangles = Triangulate(input);
@@ -192,7 +202,7 @@ int vtkCVTRemeshFilter::RequestData(
     {
       vtkErrorMacro("The input has no one-component point array '"
         << this->DensityArray << "' to use as density; name a point array or leave it empty.");
-      return 0;
+      return false;
     }
     mesh.Density.resize(static_cast<size_t>(density->GetNumberOfTuples()));
     for (vtkIdType p = 0; p < density->GetNumberOfTuples(); ++p)
@@ -209,7 +219,7 @@ int vtkCVTRemeshFilter::RequestData(
   if (!problem.empty())
   {
     vtkErrorMacro("Cannot remesh this input: " << problem << ".");
-    return 0;
+    return false;
   }
   // What cleaning did before the core's repairs: merged points, dropped degenerate cells.
   const vtkIdType mergedPoints = input->GetNumberOfPoints() - triangles->GetNumberOfPoints();
@@ -226,7 +236,7 @@ int vtkCVTRemeshFilter::RequestData(
   if (this->NumberOfSites < 3)
   {
     vtkErrorMacro("NumberOfSites is " << this->NumberOfSites << "; a remesh needs at least 3.");
-    return 0;
+    return false;
   }
   const cvt::MeshTopology inputTopology =
     cvt::ComputeMeshTopology(mesh.NumberOfPoints(), mesh.Triangles);
@@ -258,7 +268,7 @@ int vtkCVTRemeshFilter::RequestData(
   {
     vtkErrorMacro(
       "The surface CVT failed: " << (error.empty() ? engine.GetLastError() : error) << ".");
-    return 0;
+    return false;
   }
 
   const double optimizeSeconds = since(stage);
@@ -271,7 +281,7 @@ int vtkCVTRemeshFilter::RequestData(
   if (!engine.ComputeDual(dual))
   {
     vtkErrorMacro("The restricted Delaunay triangulation failed: " << engine.GetLastError() << ".");
-    return 0;
+    return false;
   }
   FillLabels(labelsOut, triangles, mesh, engine.GetPointLabels());
   const cvt::Remesh remesh = cvt::BuildRemesh(dual, inputTopology.Loops.size());
@@ -354,13 +364,14 @@ int vtkCVTRemeshFilter::RequestData(
   cvtvtk::AddFieldValue(fields, "OptimizeSeconds", optimizeSeconds);
   cvtvtk::AddFieldValue(fields, "RemeshSeconds", since(stage));
   this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkCVTRemeshFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "FailPipelineOnError: " << this->FailPipelineOnError << "\n";
   os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "Method: " << (this->Method == LLOYD ? "Lloyd" : "L-BFGS") << "\n";

@@ -33,6 +33,7 @@
 
 #include "cvtFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkTimeStamp.h" // for LastFailure
 
 #include <string> // for std::string
 
@@ -85,16 +86,33 @@ public:
   vtkPolyData* GetRemeshOutput();
   vtkTable* GetHistoryOutput();
 
+  ///@{
+  /**
+   * What RequestData returns after bad input or a failed run (the error is reported and the
+   * outputs are empty either way): 0 when on (default, VTK's convention: Update() fails), 1
+   * when off, so that ParaView shows the empty outputs (clears the view) and prints the error
+   * once instead of on every view's update. The ParaView plugin turns it off.
+   */
+  vtkSetMacro(FailPipelineOnError, bool);
+  vtkGetMacro(FailPipelineOnError, bool);
+  vtkBooleanMacro(FailPipelineOnError, bool);
+  ///@}
+
 protected:
   vtkCVTRemeshFilter();
   ~vtkCVTRemeshFilter() override = default;
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** RequestData's work: false after an error (reported with vtkErrorMacro). */
+  bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
 
   int NumberOfSites = 1000;
   int RandomSeed = 1;
   int Method = LBFGS;
+  bool FailPipelineOnError = true;
+  vtkTimeStamp LastFailure; // when the last failed run ended (see FailPipelineOnError)
+  bool LastRunFailed = false;
   int MaximumNumberOfIterations = 60;
   double Tolerance = 1e-7;
   double GradientTolerance = 0.0;

@@ -58,6 +58,8 @@ vtkCVTSurfaceFilter::vtkCVTSurfaceFilter()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(4);
+  // What progress bars show (ParaView: the label the user knows, not the class name).
+  this->SetProgressText("CVT Surface");
 }
 
 vtkPolyData* vtkCVTSurfaceFilter::GetSitesOutput()
@@ -140,8 +142,9 @@ bool vtkCVTSurfaceFilter::ReadGeometryImage(
   vtkPointData* pd = input->GetPointData();
   if (!ReadFloats(pd->GetArray("Position"), 3, image.Position))
   {
-    error = "The geometry image has no 3-component point array 'Position'; make one with "
-            "vtkCVTGeometryImageSource.";
+    error = "The input is not a geometry image (no 3-component point array 'Position'); make "
+            "one with CVT Geometry Image or CVT Mesh Geometry Image (vtkCVTGeometryImageSource, "
+            "vtkCVTMeshGeometryImage), or remesh a mesh with CVT Remesh (vtkCVTRemeshFilter).";
     return false;
   }
   if (!ReadFloats(pd->GetArray("Normal"), 3, image.Normal))
@@ -167,6 +170,14 @@ bool vtkCVTSurfaceFilter::ReadGeometryImage(
 int vtkCVTSurfaceFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  return cvtvtk::RunRequest(this, outputVector, this->FailPipelineOnError, this->LastFailure,
+    this->LastRunFailed, [&] { return this->Compute(inputVector, outputVector); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceFilter::Compute(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
   vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
@@ -184,13 +195,13 @@ int vtkCVTSurfaceFilter::RequestData(
   if (!ReadGeometryImage(input, image, readError))
   {
     vtkErrorMacro("" << readError);
-    return 0;
+    return false;
   }
   const std::string problem = cvt::CheckGeometryImage(image, this->NumberOfSites);
   if (!problem.empty())
   {
     vtkErrorMacro("Bad geometry image: " << problem << ".");
-    return 0;
+    return false;
   }
   double minimumWeight = VTK_DOUBLE_MAX, maximumWeight = 0.0, area = 0.0;
   long long valid = 0;
@@ -218,12 +229,12 @@ int vtkCVTSurfaceFilter::RequestData(
   {
     if (!this->RunOnCPU(input, image, valid, choice.Reason, outputVector))
     {
-      return 0;
+      return false;
     }
     vtkFieldData* cpuFields = sitesOut->GetFieldData();
     cvtvtk::AddFieldValue(cpuFields, "MinimumAreaWeight", minimumWeight);
     cvtvtk::AddFieldValue(cpuFields, "MaximumAreaWeight", maximumWeight);
-    return 1;
+    return true;
   }
 
   // --- Sites and the optimiser on the GPU engine.
@@ -234,7 +245,7 @@ int vtkCVTSurfaceFilter::RequestData(
   {
     vtkErrorMacro("Only " << pixels.size() << " distinct pixels could hold the "
                           << this->NumberOfSites << " sites; use fewer sites or a finer image.");
-    return 0;
+    return false;
   }
   vtkNew<vtkCVTSurfaceEngine> engine;
   cvt::OptimizerOptions options;
@@ -260,7 +271,7 @@ int vtkCVTSurfaceFilter::RequestData(
   {
     vtkErrorMacro(
       "The GPU surface CVT failed: " << (ready ? error : engine->GetLastError()) << ".");
-    return 0;
+    return false;
   }
   if (result.StopReason.rfind("no sufficient decrease", 0) == 0)
   {
@@ -306,7 +317,7 @@ int vtkCVTSurfaceFilter::RequestData(
   remeshOut->GetPointData()->AddArray(remeshIds);
 
   cvtvtk::FillHistoryTable(historyOut, result.History);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -411,6 +422,7 @@ int vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage&
 void vtkCVTSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "FailPipelineOnError: " << this->FailPipelineOnError << "\n";
   os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "Method: " << (this->Method == LLOYD ? "Lloyd" : "L-BFGS") << "\n";

@@ -24,6 +24,7 @@
 
 #include "cvtFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkTimeStamp.h" // for LastFailure
 
 #include <string> // for std::string
 
@@ -107,6 +108,18 @@ public:
    */
   static bool ReadGeometryImage(vtkImageData* input, cvt::GeometryImage& image, std::string& error);
 
+  ///@{
+  /**
+   * What RequestData returns after bad input or a failed run (the error is reported and the
+   * outputs are empty either way): 0 when on (default, VTK's convention: Update() fails), 1
+   * when off, so that ParaView shows the empty outputs (clears the view) and prints the error
+   * once instead of on every view's update. The ParaView plugin turns it off.
+   */
+  vtkSetMacro(FailPipelineOnError, bool);
+  vtkGetMacro(FailPipelineOnError, bool);
+  vtkBooleanMacro(FailPipelineOnError, bool);
+  ///@}
+
 protected:
   vtkCVTSurfaceFilter();
   ~vtkCVTSurfaceFilter() override = default;
@@ -116,10 +129,15 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** RequestData's work: false after an error (reported with vtkErrorMacro). */
+  bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
 
   int NumberOfSites = 1000;
   int RandomSeed = 1;
   int Method = LBFGS;
+  bool FailPipelineOnError = true;
+  vtkTimeStamp LastFailure; // when the last failed run ended (see FailPipelineOnError)
+  bool LastRunFailed = false;
   int MaximumNumberOfIterations = 100;
   double Tolerance = 1e-6;
   double GradientTolerance = 0.0;

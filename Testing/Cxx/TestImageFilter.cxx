@@ -7,6 +7,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -479,20 +480,88 @@ TEST(ImageFilter, UniformDensityNameMeansNoArray)
   EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 4);
 }
 
-TEST(ImageFilterBadInput, MultiComponentDensity)
+TEST(ImageFilterBadInput, TwoComponentDensity)
 {
   auto image = MakeImage(8, 8);
-  vtkNew<vtkUnsignedCharArray> rgb;
-  rgb->SetName("rgb");
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(64);
-  rgb->Fill(10);
-  image->GetPointData()->AddArray(rgb);
+  vtkNew<vtkUnsignedCharArray> pairs;
+  pairs->SetName("pairs");
+  pairs->SetNumberOfComponents(2);
+  pairs->SetNumberOfTuples(64);
+  pairs->Fill(10);
+  image->GetPointData()->AddArray(pairs);
   vtkNew<vtkCVTImageFilter> filter;
   filter->SetInputData(image);
   filter->SetNumberOfSites(4);
-  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rgb");
-  EXPECT_TRUE(Contains(RunExpectingError(filter), "3 components"));
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "pairs");
+  EXPECT_TRUE(Contains(RunExpectingError(filter), "2 components"));
+}
+
+TEST(ImageFilter, ColourDensityGivesLuminanceAndInvertMakesDarkDense)
+{
+  // An RGB picture: black on the left half, white on the right.
+  auto image = MakeImage(32, 32);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetName("rgb");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(32 * 32);
+  for (int j = 0; j < 32; ++j)
+  {
+    for (int i = 0; i < 32; ++i)
+    {
+      const double grey = i < 16 ? 0.0 : 255.0;
+      rgb->SetTuple3(j * 32 + i, grey, grey, grey);
+    }
+  }
+  image->GetPointData()->AddArray(rgb);
+  for (bool invert : { false, true })
+  {
+    vtkNew<vtkCVTImageFilter> filter;
+    filter->SetInputData(image);
+    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rgb");
+    filter->SetNumberOfSites(20);
+    filter->SetMaximumNumberOfIterations(10);
+    filter->SetInvertDensity(invert);
+    filter->Update();
+    vtkPolyData* sites = filter->GetSitesOutput();
+    ASSERT_EQ(sites->GetNumberOfPoints(), 20);
+    int left = 0;
+    for (vtkIdType i = 0; i < 20; ++i)
+    {
+      left += sites->GetPoint(i)[0] < 0.0 ? 1 : 0;
+    }
+    // The density is zero on one half: every site is on the other.
+    EXPECT_EQ(left, invert ? 20 : 0) << (invert ? "inverted" : "as is");
+  }
+}
+
+TEST(ImageFilterBadInput, FailPipelineOnErrorOffStillEmptiesTheOutputs)
+{
+  // VTK's convention by default: the update fails; off (ParaView): it succeeds with the
+  // outputs emptied, after a good run filled them.
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(8, 8));
+  filter->SetNumberOfSites(4);
+  EXPECT_EQ(filter->GetExecutive()->Update(), 1);
+  ASSERT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 4);
+  vtkNew<ErrorCatcher> catcher;
+  filter->AddObserver(vtkCommand::ErrorEvent, catcher);
+  filter->SetNumberOfSites(1000); // more sites than pixels
+  EXPECT_EQ(filter->GetExecutive()->Update(), 0);
+  filter->FailPipelineOnErrorOff();
+  filter->SetNumberOfSites(4);
+  EXPECT_EQ(filter->GetExecutive()->Update(), 1);
+  filter->SetNumberOfSites(1000);
+  EXPECT_EQ(filter->GetExecutive()->Update(), 1);
+  // Every view updates its port: the failed run is not repeated.
+  for (int port = 0; port < 4; ++port)
+  {
+    filter->UpdatePiece(0, 1, 0);
+    filter->Update(port);
+  }
+  EXPECT_EQ(catcher->Messages.size(), 2u);
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetLabelsOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetHistoryOutput()->GetNumberOfRows(), 0);
 }
 
 TEST(ImageFilterBadInput, SitesOutsideTheDomain)
