@@ -9,9 +9,9 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, LoadPlugin, OutputPort,
-                             PNGSeriesReader, Render, ResetCamera, SaveScreenshot, Show,
-                             Wavelet)
+from paraview.simple import (ColorBy, CreateView, Delete, GetActiveViewOrCreate,
+                             GetColorTransferFunction, LoadPlugin, OutputPort, PNGSeriesReader,
+                             Render, ResetCamera, SaveScreenshot, Show, Wavelet)
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 from vtkmodules.vtkImagingCore import vtkImageDifference
 from vtkmodules.vtkIOImage import vtkPNGReader
@@ -114,15 +114,53 @@ def main(plugin, data_dir, output_dir):
     mesh_cvt.UpdatePipeline()
     check(mesh_cvt.GetDataInformation(2).GetNumberOfPoints() == 100, "mesh remesh has 100 vertices")
 
-    # Bad input: more sites than pixels. An error, an empty output; the session goes on.
+    # The first picture of Show(), as pvpython gives it: the plugin's display hints.
+    first_view = CreateView("RenderView")
+    shown = {
+        "image sites": Show(OutputPort(cvt, 0), first_view),
+        "image labels": Show(OutputPort(cvt, 1), first_view),
+        "image dual": Show(OutputPort(cvt, 2), first_view),
+        "surface sites": Show(OutputPort(surface, 0), first_view),
+        "remesh": Show(OutputPort(surface, 2), first_view),
+    }
+    expected = {"image sites": "Point Gaussian", "image labels": "Slice",
+                "image dual": "Wireframe", "surface sites": "Point Gaussian",
+                "remesh": "Surface With Edges"}
+    for name, display in shown.items():
+        check(display.Representation == expected[name], "%s shown as %s, not %s" %
+              (name, expected[name], display.Representation))
+    check(shown["image labels"].ColorArrayName[1] == "SiteId", "labels coloured by SiteId")
+    site_colours = GetColorTransferFunction("SiteId").RGBPoints
+    check(list(site_colours[1:4]) == [0.27, 0.0, 0.33],
+          "SiteId has the plugin's many-hue colour map, not Cool to Warm: %s" % site_colours[:4])
+    controller = servermanager.vtkSMParaViewPipelineControllerWithRendering()
+    for proxy, port, view_type, icon in [(cvt, 1, "RenderView", "GEOMETRY"),
+                                         (cvt, 2, "None", "GEOMETRY"),
+                                         (cvt, 3, "None", "SpreadSheetView"),
+                                         (surface, 1, "None", "GEOMETRY"),
+                                         (surface, 2, "RenderView", "GEOMETRY"),
+                                         (torus, 0, "None", "GEOMETRY")]:
+        name = "%s port %d" % (proxy.GetXMLLabel(), port)
+        check(controller.GetPreferredViewType(proxy.SMProxy, port) == view_type,
+              "%s opens in %s on Apply" % (name, view_type))
+        check(controller.GetPipelineIcon(proxy.SMProxy, port) == icon,
+              "%s has the pipeline icon %s" % (name, icon))
+    Delete(first_view)
+
+    # Bad input: more sites than pixels. An error, once, an empty output; the session goes on.
     messages = vtkStringOutputWindow()
     previous = vtkOutputWindow.GetInstance()
     vtkOutputWindow.SetInstance(messages)
     small = Wavelet(WholeExtent=[0, 7, 0, 7, 0, 0])
     bad = CVTImage(Input=small, NumberOfSites=100)
     bad.UpdatePipeline()
+    for port in range(4):
+        bad.UpdatePipeline()
+        bad.GetDataInformation(port)
     vtkOutputWindow.SetInstance(previous)
-    check("exceeds the 64 pixels" in messages.GetOutput(), "the error names the problem")
+    check(messages.GetOutput().count("exceeds the 64 pixels") == 1,
+          "the error names the problem, once: %s" % messages.GetOutput())
+    check("returned failure" not in messages.GetOutput(), "no pipeline failure lines")
     check(bad.GetDataInformation(0).GetNumberOfPoints() == 0, "bad input leaves an empty output")
     bad.NumberOfSites = 10
     bad.UpdatePipeline()
