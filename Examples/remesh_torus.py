@@ -5,7 +5,8 @@ the dual triangulation as a new mesh, saved as .vtp and rendered to a PNG.
     PYTHONPATH=build/lib/python3.11/site-packages /usr/bin/python3 Examples/remesh_torus.py \
         remesh.vtp remesh.png [SITES] [W H]
 
-Needs Debian's python3-paraview (ParaView's VTK modules) and the built `cvt` package."""
+Needs the built `cvt` package and the VTK Python modules it was built against (Debian:
+python3-paraview, or python3-vtk9 for a standalone-VTK build)."""
 import sys
 
 from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus

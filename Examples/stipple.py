@@ -4,7 +4,8 @@
     PYTHONPATH=build/lib/python3.11/site-packages /usr/bin/python3 Examples/stipple.py \
         Data/density.png stipple.png 3000
 
-Needs Debian's python3-paraview (ParaView's VTK modules) and the built `cvt` package."""
+Needs the built `cvt` package and the VTK Python modules it was built against (Debian:
+python3-paraview, or python3-vtk9 for a standalone-VTK build)."""
 import sys
 
 from vtkmodules.vtkCommonDataModel import vtkDataObject
