@@ -891,7 +891,8 @@ int RunRemesh(const Options& options)
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
-              << Field(remesh, "SplitVertices") << " pinched vertices split)\n"
+              << Field(remesh, "SplitVertices") << " pinched vertices split, "
+              << Field(remesh, "FlippedEdges") << " edges flipped)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "

@@ -345,6 +345,7 @@ bool vtkCVTRemeshFilter::Compute(
   cvtvtk::AddFieldValue(remeshFields, "RemovedTriangles", remesh.RemovedTriangles);
   cvtvtk::AddFieldValue(remeshFields, "FilledHoles", remesh.FilledHoles);
   cvtvtk::AddFieldValue(remeshFields, "SplitVertices", remesh.SplitVertices);
+  cvtvtk::AddFieldValue(remeshFields, "FlippedEdges", remesh.FlippedEdges);
   const cvt::MeshTopology remeshTopology =
     cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
   AddTopology(remeshFields, "", remeshTopology);

@@ -38,6 +38,106 @@ std::uint64_t DirectedKey(int a, int b)
 {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
 }
+
+/// The unit normal of triangle p0 p1 p2 (zero when degenerate).
+void UnitNormal(const double* p0, const double* p1, const double* p2, double n[3])
+{
+  const double u[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+  const double v[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+  n[0] = u[1] * v[2] - u[2] * v[1];
+  n[1] = u[2] * v[0] - u[0] * v[2];
+  n[2] = u[0] * v[1] - u[1] * v[0];
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] = length > 0.0 ? n[k] / length : 0.0;
+  }
+}
+
+/// Flips the shared edge of two nearly coplanar triangles wherever that raises the smaller of
+/// their smallest angles: restricted Delaunay triangles of cells cut by a border or a crease
+/// can be thin where the other diagonal of the same four vertices is not. Edges between two
+/// pinned vertices (border and crease lines) stay. Returns the number of flips.
+int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>& pinned,
+  std::vector<std::array<int, 3>>& triangles)
+{
+  // Coplanar enough that the flip does not cut through the surface: 15 degrees.
+  const double flatEnough = std::cos(15.0 * 3.14159265358979323846 / 180.0);
+  const auto point = [&points](int v) { return &points[3 * static_cast<size_t>(v)]; };
+  const auto smallestAngle = [&point](const std::array<int, 3>& t)
+  {
+    double angle[3];
+    CornerAngles(point(t[0]), point(t[1]), point(t[2]), angle);
+    return *std::min_element(angle, angle + 3);
+  };
+  int flips = 0;
+  for (int pass = 0; pass < 4; ++pass)
+  {
+    // Each directed edge's triangle; a flip's new edge must not exist yet.
+    std::unordered_map<std::uint64_t, int> triangleOf;
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    {
+      for (int e = 0; e < 3; ++e)
+      {
+        triangleOf[DirectedKey(triangles[t][e], triangles[t][(e + 1) % 3])] = t;
+      }
+    }
+    std::vector<char> touched(triangles.size(), 0);
+    int passFlips = 0;
+    for (int t1 = 0; t1 < static_cast<int>(triangles.size()); ++t1)
+    {
+      for (int e = 0; e < 3 && !touched[t1]; ++e)
+      {
+        const int a = triangles[t1][e], b = triangles[t1][(e + 1) % 3];
+        const int c = triangles[t1][(e + 2) % 3];
+        const auto twin = triangleOf.find(DirectedKey(b, a));
+        if (twin == triangleOf.end() || touched[twin->second] || (pinned[a] && pinned[b]))
+        {
+          continue;
+        }
+        const int t2 = twin->second;
+        const std::array<int, 3>& other = triangles[t2];
+        const int d = other[0] != a && other[0] != b
+          ? other[0]
+          : (other[1] != a && other[1] != b ? other[1] : other[2]);
+        if (c == d || triangleOf.count(DirectedKey(c, d)) || triangleOf.count(DirectedKey(d, c)))
+        {
+          continue;
+        }
+        double n1[3], n2[3], m1[3], m2[3];
+        UnitNormal(point(a), point(b), point(c), n1);
+        UnitNormal(point(b), point(a), point(d), n2);
+        // The new pair (a, d, c) and (d, b, c): both facing as before.
+        const std::array<int, 3> new1 = { a, d, c }, new2 = { d, b, c };
+        UnitNormal(point(a), point(d), point(c), m1);
+        UnitNormal(point(d), point(b), point(c), m2);
+        const auto dot = [](const double* u, const double* v)
+        { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+        if (dot(n1, n2) < flatEnough || dot(m1, n1) < flatEnough || dot(m2, n2) < flatEnough ||
+          dot(m1, m2) < flatEnough)
+        {
+          continue;
+        }
+        const double before = std::min(smallestAngle(triangles[t1]), smallestAngle(other));
+        const double after = std::min(smallestAngle(new1), smallestAngle(new2));
+        if (after <= before + 1e-9)
+        {
+          continue;
+        }
+        triangles[t1] = new1;
+        triangles[t2] = new2;
+        touched[t1] = touched[t2] = 1;
+        ++passFlips;
+      }
+    }
+    flips += passFlips;
+    if (passFlips == 0)
+    {
+      break;
+    }
+  }
+  return flips;
+}
 }
 
 Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
@@ -228,6 +328,14 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
         &remesh.SourceBarycentric[3 * t[widest]]);
       remesh.SourceTriangles[t[widest]] = dual.SurfaceTriangles[i];
     }
+  }
+  {
+    std::vector<char> pinned(remesh.SiteIds.size());
+    for (size_t v = 0; v < pinned.size(); ++v)
+    {
+      pinned[v] = dual.Pinned[static_cast<size_t>(dualOf[v])];
+    }
+    remesh.FlippedEdges = FlipThinTriangles(remesh.Points, pinned, remesh.Triangles);
   }
   // Sheets that meet only at a vertex (a part thinner than the cells, a border touching
   // itself) get a vertex each, so the remesh is manifold at its vertices too.

@@ -23,6 +23,7 @@ struct Remesh
   int RemovedTriangles = 0;              // dropped to keep edges manifold
   int FilledHoles = 0;                   // small holes closed (cells meeting in a degenerate point)
   int SplitVertices = 0;                 // pinched vertices given one copy per extra fan
+  int FlippedEdges = 0;                  // diagonals flipped to widen thin triangles
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface

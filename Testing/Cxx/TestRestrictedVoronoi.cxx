@@ -3,6 +3,7 @@
 // brute-force nearest sites on a fine quadrature for a curved one.
 #include "cvtExactVoronoi.h"
 #include "cvtMeshOptimizer.h"
+#include "cvtQuality.h"
 #include "cvtRemesh.h"
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSampling.h"
@@ -422,6 +423,37 @@ TEST(RestrictedVoronoi, RemeshOfThinPartsIsManifold)
   EXPECT_EQ(parts.Components, 2);
   EXPECT_EQ(parts.BoundaryLoops, 0);
   EXPECT_EQ(parts.EulerCharacteristic, 4); // two spheres
+}
+
+TEST(RestrictedVoronoi, RemeshFlipsThinTrianglesButNotFeatureEdges)
+{
+  // A flat rhombus split along its long diagonal a-b: two triangles of 11.3 degrees, where the
+  // short diagonal c-d gives 22.6 degrees. The flip is made unless a and b are pinned (then a-b
+  // may be a crease or border line).
+  const double points[4][3] = { { -1, 0, 0 }, { 1, 0, 0 }, { 0, 0.2, 0 }, { 0, -0.2, 0 } };
+  for (bool pinned : { false, true })
+  {
+    cvt::RestrictedDual dual;
+    for (int v = 0; v < 4; ++v)
+    {
+      dual.Sites.push_back(v);
+      dual.SurfacePoints.insert(dual.SurfacePoints.end(), points[v], points[v] + 3);
+      dual.SurfaceTriangles.push_back(0);
+      dual.SurfaceBarycentric.insert(dual.SurfaceBarycentric.end(), { 1.0, 0.0, 0.0 });
+      dual.OnBoundary.push_back(1); // the rhombus is the whole (open) surface
+      dual.Pinned.push_back(pinned && v < 2 ? 1 : 0);
+      dual.BoundaryPoints.insert(dual.BoundaryPoints.end(), points[v], points[v] + 3);
+      dual.BoundaryTriangles.push_back(0);
+      dual.BoundaryBarycentric.insert(dual.BoundaryBarycentric.end(), { 1.0, 0.0, 0.0 });
+    }
+    dual.Triangles = { { 0, 1, 2 }, { 1, 0, 3 } };
+    const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1);
+    ASSERT_EQ(remesh.Triangles.size(), 2u);
+    EXPECT_EQ(remesh.FlippedEdges, pinned ? 0 : 1);
+    const cvt::MeshQuality quality = cvt::MeasureMesh(remesh.Points, remesh.Triangles);
+    EXPECT_NEAR(quality.MinimumAngle, pinned ? 11.31 : 22.62, 0.01);
+    EXPECT_EQ(cvt::ComputeMeshTopology(4, remesh.Triangles).BoundaryLoops, 1);
+  }
 }
 
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
