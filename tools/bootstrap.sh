@@ -21,7 +21,7 @@ packages=(
   libprotobuf-dev protobuf-compiler
   libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
   libeigen3-dev liblbfgspp-dev libnanoflann-dev
-  libgtest-dev googletest python3-matplotlib xvfb xauth
+  libgtest-dev googletest python3-matplotlib xvfb xauth xdotool
   libvtk9.1 libvtk9.1-qt libtbb-dev
 )
 missing=()
