@@ -367,13 +367,17 @@ void ProbeReader(vtkAlgorithm* reader, const std::string& path)
   }
   int status = 0;
   waitpid(child, &status, 0);
-  if (WIFSIGNALED(status))
+  // The child ends with _Exit(0) unless the reader kills it (a signal, or an exit status other
+  // than 0, as a sanitizer turns a crash into).
+  if (WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) != 0))
   {
-    Fail("cannot read --input '" + path + "': the file is corrupt or truncated (" +
-      (WTERMSIG(status) == SIGALRM
-          ? std::string("reading it did not end within a minute")
-          : std::string("the reader crashed on it: ") + strsignal(WTERMSIG(status))) +
-      ")");
+    std::string why = "the reader crashed on it";
+    if (WIFSIGNALED(status))
+    {
+      why = WTERMSIG(status) == SIGALRM ? std::string("reading it did not end within a minute")
+                                        : why + ": " + strsignal(WTERMSIG(status));
+    }
+    Fail("cannot read --input '" + path + "': the file is corrupt or truncated (" + why + ")");
   }
 }
 

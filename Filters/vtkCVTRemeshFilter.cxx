@@ -36,6 +36,7 @@ namespace
 vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
 {
   vtkNew<vtkStaticCleanPolyData> merge; // threaded; tolerance 0 merges equal points only
+  merge->SetMergingArray(nullptr);      // VTK 9.2's constructor allocates "" and never frees it
   merge->SetInputData(input);
   merge->SetTolerance(0.0);
   merge->ConvertLinesToPointsOff();
