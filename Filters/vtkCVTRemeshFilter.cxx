@@ -22,6 +22,7 @@
 #include "vtkStaticCleanPolyData.h"
 #include "vtkTable.h"
 #include "vtkTriangleFilter.h"
+#include "vtkVersionMacros.h" // for VTK_VERSION_CHECK
 
 #include <algorithm>
 #include <chrono>
@@ -36,7 +37,9 @@ namespace
 vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
 {
   vtkNew<vtkStaticCleanPolyData> merge; // threaded; tolerance 0 merges equal points only
-  merge->SetMergingArray(nullptr);      // VTK 9.2's constructor allocates "" and never frees it
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  merge->SetMergingArray(nullptr); // 9.2's constructor allocates a name it never frees
+#endif
   merge->SetInputData(input);
   merge->SetTolerance(0.0);
   merge->ConvertLinesToPointsOff();
