@@ -97,6 +97,16 @@ std::string RunExpectingError(vtkCVTImageFilter* filter)
   return all;
 }
 
+/// Four sites on `image` with the point array `density`, expecting failure: the error message.
+std::string ErrorWithDensity(vtkImageData* image, const char* density)
+{
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(image);
+  filter->SetNumberOfSites(4);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, density);
+  return RunExpectingError(filter);
+}
+
 bool Contains(const std::string& text, const std::string& part)
 {
   return text.find(part) != std::string::npos;
@@ -430,11 +440,7 @@ TEST(ImageFilterBadInput, NaNDensity)
   AddDensity(image, "rho", 1.0f);
   vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("rho"))
     ->SetValue(5, std::numeric_limits<float>::quiet_NaN());
-  vtkNew<vtkCVTImageFilter> filter;
-  filter->SetInputData(image);
-  filter->SetNumberOfSites(4);
-  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rho");
-  EXPECT_TRUE(Contains(RunExpectingError(filter), "not finite"));
+  EXPECT_TRUE(Contains(ErrorWithDensity(image, "rho"), "not finite"));
 }
 
 TEST(ImageFilterBadInput, NegativeDensity)
@@ -442,22 +448,14 @@ TEST(ImageFilterBadInput, NegativeDensity)
   auto image = MakeImage(8, 8);
   AddDensity(image, "rho", 1.0f);
   vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("rho"))->SetValue(3, -1.0f);
-  vtkNew<vtkCVTImageFilter> filter;
-  filter->SetInputData(image);
-  filter->SetNumberOfSites(4);
-  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rho");
-  EXPECT_TRUE(Contains(RunExpectingError(filter), "negative"));
+  EXPECT_TRUE(Contains(ErrorWithDensity(image, "rho"), "negative"));
 }
 
 TEST(ImageFilterBadInput, AllZeroDensity)
 {
   auto image = MakeImage(8, 8);
   AddDensity(image, "rho", 0.0f);
-  vtkNew<vtkCVTImageFilter> filter;
-  filter->SetInputData(image);
-  filter->SetNumberOfSites(4);
-  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rho");
-  EXPECT_TRUE(Contains(RunExpectingError(filter), "zero everywhere"));
+  EXPECT_TRUE(Contains(ErrorWithDensity(image, "rho"), "zero everywhere"));
 }
 
 TEST(ImageFilterBadInput, MissingDensityArray)
@@ -489,11 +487,7 @@ TEST(ImageFilterBadInput, TwoComponentDensity)
   pairs->SetNumberOfTuples(64);
   pairs->Fill(10);
   image->GetPointData()->AddArray(pairs);
-  vtkNew<vtkCVTImageFilter> filter;
-  filter->SetInputData(image);
-  filter->SetNumberOfSites(4);
-  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "pairs");
-  EXPECT_TRUE(Contains(RunExpectingError(filter), "2 components"));
+  EXPECT_TRUE(Contains(ErrorWithDensity(image, "pairs"), "2 components"));
 }
 
 TEST(ImageFilter, ColourDensityGivesLuminanceAndInvertMakesDarkDense)

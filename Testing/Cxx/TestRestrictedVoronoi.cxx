@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -167,6 +168,27 @@ std::vector<double> SitesNearSphere(int count, unsigned seed)
     }
   }
   return sites;
+}
+
+/// A dual whose vertex v is site v at `points[v]` (its own surface and border point), on the
+/// border or not, pinned where `pinned` says; the triangles are left to the caller.
+cvt::RestrictedDual DualAt(const std::vector<std::array<double, 3>>& points, bool onBoundary,
+  const std::vector<char>& pinned)
+{
+  cvt::RestrictedDual dual;
+  for (size_t v = 0; v < points.size(); ++v)
+  {
+    dual.Sites.push_back(static_cast<int>(v));
+    dual.SurfacePoints.insert(dual.SurfacePoints.end(), points[v].begin(), points[v].end());
+    dual.SurfaceTriangles.push_back(0);
+    dual.SurfaceBarycentric.insert(dual.SurfaceBarycentric.end(), { 1.0, 0.0, 0.0 });
+    dual.OnBoundary.push_back(onBoundary ? 1 : 0);
+    dual.Pinned.push_back(pinned.empty() ? 0 : pinned[v]);
+    dual.BoundaryPoints.insert(dual.BoundaryPoints.end(), points[v].begin(), points[v].end());
+    dual.BoundaryTriangles.push_back(0);
+    dual.BoundaryBarycentric.insert(dual.BoundaryBarycentric.end(), { 1.0, 0.0, 0.0 });
+  }
+  return dual;
 }
 }
 
@@ -393,21 +415,10 @@ TEST(RestrictedVoronoi, RemeshOfThinPartsIsManifold)
   // Dual triangles as a part thinner than the cells gives them: two closed tetrahedra whose
   // cells meet only at the shared site 0 (a pinch), and the two sides of a sliver of three
   // sites (two triangles on the same sites, a pillow of no area).
-  const double points[10][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { -1, 0, 0 },
-    { 0, -1, 0 }, { 0, 0, -1 }, { 5, 5, 5 }, { 6, 5, 5 }, { 5, 6, 5 } };
-  cvt::RestrictedDual dual;
-  for (int v = 0; v < 10; ++v)
-  {
-    dual.Sites.push_back(v);
-    dual.SurfacePoints.insert(dual.SurfacePoints.end(), points[v], points[v] + 3);
-    dual.SurfaceTriangles.push_back(0);
-    dual.SurfaceBarycentric.insert(dual.SurfaceBarycentric.end(), { 1.0, 0.0, 0.0 });
-    dual.OnBoundary.push_back(0);
-    dual.Pinned.push_back(0);
-    dual.BoundaryPoints.insert(dual.BoundaryPoints.end(), points[v], points[v] + 3);
-    dual.BoundaryTriangles.push_back(-1);
-    dual.BoundaryBarycentric.insert(dual.BoundaryBarycentric.end(), { 0.0, 0.0, 0.0 });
-  }
+  cvt::RestrictedDual dual =
+    DualAt({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { -1, 0, 0 }, { 0, -1, 0 },
+             { 0, 0, -1 }, { 5, 5, 5 }, { 6, 5, 5 }, { 5, 6, 5 } },
+      false, {});
   dual.Triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, 2 }, // first tetrahedron
     { 0, 5, 4 }, { 0, 4, 6 }, { 4, 5, 6 }, { 0, 6, 5 },                  // second, at site 0
     { 7, 8, 9 }, { 7, 9, 8 } };                                          // the pillow
@@ -430,22 +441,11 @@ TEST(RestrictedVoronoi, RemeshFlipsThinTrianglesButNotFeatureEdges)
   // A flat rhombus split along its long diagonal a-b: two triangles of 11.3 degrees, where the
   // short diagonal c-d gives 22.6 degrees. The flip is made unless a and b are pinned (then a-b
   // may be a crease or border line).
-  const double points[4][3] = { { -1, 0, 0 }, { 1, 0, 0 }, { 0, 0.2, 0 }, { 0, -0.2, 0 } };
   for (bool pinned : { false, true })
   {
-    cvt::RestrictedDual dual;
-    for (int v = 0; v < 4; ++v)
-    {
-      dual.Sites.push_back(v);
-      dual.SurfacePoints.insert(dual.SurfacePoints.end(), points[v], points[v] + 3);
-      dual.SurfaceTriangles.push_back(0);
-      dual.SurfaceBarycentric.insert(dual.SurfaceBarycentric.end(), { 1.0, 0.0, 0.0 });
-      dual.OnBoundary.push_back(1); // the rhombus is the whole (open) surface
-      dual.Pinned.push_back(pinned && v < 2 ? 1 : 0);
-      dual.BoundaryPoints.insert(dual.BoundaryPoints.end(), points[v], points[v] + 3);
-      dual.BoundaryTriangles.push_back(0);
-      dual.BoundaryBarycentric.insert(dual.BoundaryBarycentric.end(), { 1.0, 0.0, 0.0 });
-    }
+    // The rhombus is the whole (open) surface: every vertex is on its border.
+    cvt::RestrictedDual dual = DualAt(
+      { { -1, 0, 0 }, { 1, 0, 0 }, { 0, 0.2, 0 }, { 0, -0.2, 0 } }, true, { pinned, pinned, 0, 0 });
     dual.Triangles = { { 0, 1, 2 }, { 1, 0, 3 } };
     const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1);
     ASSERT_EQ(remesh.Triangles.size(), 2u);
