@@ -190,6 +190,17 @@ cvt::RestrictedDual DualAt(const std::vector<std::array<double, 3>>& points, boo
   }
   return dual;
 }
+
+/// 2D sites (x, y) as 3D points at z = 0.
+std::vector<double> AtZeroHeight(const std::vector<double>& xy)
+{
+  std::vector<double> xyz;
+  for (size_t i = 0; i < xy.size() / 2; ++i)
+  {
+    xyz.insert(xyz.end(), { xy[2 * i], xy[2 * i + 1], 0.0 });
+  }
+  return xyz;
+}
 }
 
 TEST(RestrictedVoronoi, FlatMeshMatchesExactVoronoiPolygons)
@@ -199,11 +210,7 @@ TEST(RestrictedVoronoi, FlatMeshMatchesExactVoronoiPolygons)
   const cvt::SurfaceMesh mesh = FlatSquare(7, -1.0, 1.0);
   const cvt::Grid grid = cvt::Grid::Square(64, -1.0, 1.0);
   const std::vector<double> sites2D = cvt::SampleSites(grid, {}, 60, 3);
-  std::vector<double> sites;
-  for (size_t i = 0; i < sites2D.size() / 2; ++i)
-  {
-    sites.insert(sites.end(), { sites2D[2 * i], sites2D[2 * i + 1], 0.0 });
-  }
+  const std::vector<double> sites = AtZeroHeight(sites2D);
   cvt::RestrictedVoronoi engine;
   ASSERT_TRUE(engine.SetMesh(mesh));
   ASSERT_TRUE(engine.SetSites(sites));
@@ -227,11 +234,7 @@ TEST(RestrictedVoronoi, LargeTrianglesMeetManyCells)
   const cvt::SurfaceMesh mesh = FlatSquare(1, -1.0, 1.0);
   const cvt::Grid grid = cvt::Grid::Square(64, -1.0, 1.0);
   const std::vector<double> sites2D = cvt::SampleSites(grid, {}, 400, 8);
-  std::vector<double> sites;
-  for (size_t i = 0; i < sites2D.size() / 2; ++i)
-  {
-    sites.insert(sites.end(), { sites2D[2 * i], sites2D[2 * i + 1], 0.0 });
-  }
+  const std::vector<double> sites = AtZeroHeight(sites2D);
   cvt::RestrictedVoronoi engine;
   cvt::CellSums sums;
   ASSERT_TRUE(engine.SetMesh(mesh) && engine.SetSites(sites) && engine.ComputeCellSums(sums));

@@ -172,45 +172,30 @@ def main():
         parts.AddInputConnection(moved.GetOutputPort())
     write(output(parts), os.path.join(folder, 'pieces.vtp'))
 
-    # A box: quads (with points repeated per face), triangulated and subdivided.
-    cube = vtk.vtkCubeSource()
-    cube.SetXLength(2.0)
-    cube.SetYLength(1.0)
-    cube.SetZLength(0.6)
-    merge = vtk.vtkCleanPolyData()
-    merge.SetInputConnection(cube.GetOutputPort())
-    tri = vtk.vtkTriangleFilter()
-    tri.SetInputConnection(merge.GetOutputPort())
-    sub = vtk.vtkLinearSubdivisionFilter()
-    sub.SetInputConnection(tri.GetOutputPort())
-    sub.SetNumberOfSubdivisions(5)
-    box = output(sub)
-    box.GetPointData().Initialize()
-    write(box, os.path.join(folder, 'box.vtp'))
+    def box_mesh(x, y, z, subdivisions):
+        """A box: quads with points repeated per face, merged, triangulated, subdivided."""
+        cube = vtk.vtkCubeSource()
+        cube.SetXLength(x)
+        cube.SetYLength(y)
+        cube.SetZLength(z)
+        merge = vtk.vtkCleanPolyData()
+        merge.SetInputConnection(cube.GetOutputPort())
+        tri = vtk.vtkTriangleFilter()
+        tri.SetInputConnection(merge.GetOutputPort())
+        last = tri
+        if subdivisions:
+            last = vtk.vtkLinearSubdivisionFilter()
+            last.SetInputConnection(tri.GetOutputPort())
+            last.SetNumberOfSubdivisions(subdivisions)
+        mesh = output(last)
+        mesh.GetPointData().Initialize()
+        return mesh
 
-    # A cube of 12 triangles.
-    coarse = vtk.vtkCubeSource()
-    coarse_merge = vtk.vtkCleanPolyData()
-    coarse_merge.SetInputConnection(coarse.GetOutputPort())
-    coarse_triangles = vtk.vtkTriangleFilter()
-    coarse_triangles.SetInputConnection(coarse_merge.GetOutputPort())
-    cube_mesh = output(coarse_triangles)
-    cube_mesh.GetPointData().Initialize()
-    write(cube_mesh, os.path.join(folder, 'cube.vtp'))
-
-    # A plate 2% thick: at 1000 sites a cell reaches both sides.
-    slab = vtk.vtkCubeSource()
-    slab.SetZLength(0.02)
-    slab_merge = vtk.vtkCleanPolyData()
-    slab_merge.SetInputConnection(slab.GetOutputPort())
-    slab_triangles = vtk.vtkTriangleFilter()
-    slab_triangles.SetInputConnection(slab_merge.GetOutputPort())
-    slab_finer = vtk.vtkLinearSubdivisionFilter()
-    slab_finer.SetInputConnection(slab_triangles.GetOutputPort())
-    slab_finer.SetNumberOfSubdivisions(3)
-    plate = output(slab_finer)
-    plate.GetPointData().Initialize()
-    write(plate, os.path.join(folder, 'plate.vtp'))
+    # A box with sharp edges; a cube of 12 triangles; a plate 2% thick (at 1000 sites a cell
+    # reaches both sides).
+    write(box_mesh(2.0, 1.0, 0.6, 5), os.path.join(folder, 'box.vtp'))
+    write(box_mesh(1.0, 1.0, 1.0, 0), os.path.join(folder, 'cube.vtp'))
+    write(box_mesh(1.0, 1.0, 0.02, 3), os.path.join(folder, 'plate.vtp'))
 
     # An open disk, and a dirty copy of it.
     disk = vtk.vtkDiskSource()
