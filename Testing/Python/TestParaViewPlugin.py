@@ -129,6 +129,17 @@ def main(plugin, data_dir, output_dir):
     for name, display in shown.items():
         check(display.Representation == expected[name], "%s shown as %s, not %s" %
               (name, expected[name], display.Representation))
+    # Site dots a fifth of the site spacing in radius, flat circles lifted off the image plane
+    # (ParaView's default, 0.5% of the extent, makes specks); other sites keep the defaults.
+    dots = shown["image sites"]
+    info = cvt.GetDataInformation(0)
+    bounds = info.GetBounds()
+    spacing = ((bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) / info.GetNumberOfPoints()) ** 0.5
+    check(abs(dots.GaussianRadius - 0.2 * spacing) < 1e-6 * spacing,
+          "image site dots of radius 0.2 x spacing %g, not %g" % (spacing, dots.GaussianRadius))
+    check(dots.ShaderPreset == "Plain circle", "image site dots drawn as plain circles")
+    check(list(dots.Position) == [0.0, 0.0, dots.GaussianRadius], "dots lifted off the image")
+    check(shown["surface sites"].ShaderPreset != "Plain circle", "surface sites keep the defaults")
     check(shown["image labels"].ColorArrayName[1] == "SiteId", "labels coloured by SiteId")
     site_colours = GetColorTransferFunction("SiteId").RGBPoints
     check(list(site_colours[1:4]) == [0.27, 0.0, 0.33],
