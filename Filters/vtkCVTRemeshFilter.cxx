@@ -161,8 +161,10 @@ bool vtkCVTRemeshFilter::Compute(
     vtkErrorMacro("The input has no polygons (only points or lines); give a surface mesh.");
     return false;
   }
-  // Corrupt files can name points that do not exist; VTK's cleaning would crash on them.
-  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  // Corrupt files can name points that do not exist; VTK's cleaning would crash on them, in
+  // any of the four cell arrays (it marks the points every cell uses).
+  for (vtkCellArray* cells :
+    { input->GetVerts(), input->GetLines(), input->GetPolys(), input->GetStrips() })
   {
     vtkDataArray* ids = cells ? cells->GetConnectivityArray() : nullptr;
     if (!cells || cells->GetNumberOfCells() == 0)
@@ -173,7 +175,7 @@ bool vtkCVTRemeshFilter::Compute(
     ids->GetRange(range, 0);
     if (!cells->IsValid() || range[0] < 0 || range[1] >= input->GetNumberOfPoints())
     {
-      vtkErrorMacro("The input's polygons are corrupt: they name points outside 0.."
+      vtkErrorMacro("The input's cells are corrupt: they name points outside 0.."
         << input->GetNumberOfPoints() - 1 << " (a damaged file?).");
       return false;
     }

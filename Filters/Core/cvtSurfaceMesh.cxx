@@ -100,11 +100,18 @@ std::string MeshRepairReport::Summary() const
 
 std::string CheckSurfaceMesh(const SurfaceMesh& mesh)
 {
+  constexpr double MaximumCoordinate = 1e30;
   for (double c : mesh.Points)
   {
     if (!std::isfinite(c))
     {
       return "the mesh has NaN or infinite point coordinates";
+    }
+    // Energies are areas times squared distances: beyond this they overflow to infinity.
+    if (std::abs(c) > MaximumCoordinate)
+    {
+      return "the mesh has point coordinates beyond 1e30 in magnitude (a damaged file, or "
+             "units to rescale)";
     }
   }
   if (mesh.Density.empty())

@@ -56,8 +56,8 @@ CVTCORE_EXPORT std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport
 CVTCORE_EXPORT std::vector<int> SplitPinchedPoints(
   int numberOfPoints, std::vector<std::array<int, 3>>& triangles);
 
-/// Checks coordinates and density: "" or what is wrong (NaN or infinite coordinates, NaN,
-/// infinite, negative or all-zero density, wrong density size).
+/// Checks coordinates and density: "" or what is wrong (NaN, infinite or beyond 1e30
+/// coordinates, NaN, infinite, negative or all-zero density, wrong density size).
 CVTCORE_EXPORT std::string CheckSurfaceMesh(const SurfaceMesh& mesh);
 
 struct MeshTopology

@@ -467,5 +467,5 @@ TEST(RemeshFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   vtkNew<vtkPolyData> dangling;
   dangling->DeepCopy(Sphere());
   dangling->GetPolys()->GetConnectivityArray()->SetTuple1(4, dangling->GetNumberOfPoints() + 7);
-  expectError(dangling, "polygons are corrupt");
+  expectError(dangling, "cells are corrupt");
 }
