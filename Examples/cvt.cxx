@@ -16,6 +16,7 @@
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -53,6 +54,7 @@
 #include <limits>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -253,8 +255,64 @@ vtkSmartPointer<vtkPolyData> ReadSitesCsv(const std::string& path)
   return sites;
 }
 
+/// The files of one run, written under temporary names in the output folder and renamed into
+/// place together once all are written: a full disk, a file-size limit or a folder that turns
+/// read-only leaves the previous results or nothing, never a truncated file under a real name.
+/// Errors throw (main reports them), so that the destructor removes the temporary files.
+class OutputFiles
+{
+public:
+  explicit OutputFiles(const std::string& folder)
+    : Folder(folder + "/")
+  {
+  }
+  ~OutputFiles()
+  {
+    for (const std::string& name : this->Pending)
+    {
+      std::remove(this->Temporary(name).c_str());
+    }
+  }
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+
+  /// Where to write `name` for now.
+  std::string Add(const std::string& name)
+  {
+    this->Pending.push_back(name);
+    return this->Temporary(name);
+  }
+  /// The complaint for a file that could not be written.
+  [[noreturn]] void Failed(const std::string& name, const std::string& why) const
+  {
+    throw std::runtime_error("cannot write '" + this->Folder + name + "'" +
+      (why.empty() ? std::string() : " (" + why + ")") +
+      "; check the free space and permissions of the --output directory");
+  }
+  /// Renames every written file into place.
+  void Commit()
+  {
+    for (const std::string& name : this->Pending)
+    {
+      if (std::rename(this->Temporary(name).c_str(), (this->Folder + name).c_str()) != 0)
+      {
+        this->Failed(name, std::strerror(errno));
+      }
+    }
+    this->Pending.clear();
+  }
+
+private:
+  std::string Temporary(const std::string& name) const
+  {
+    return this->Folder + "." + name + ".partial";
+  }
+  std::string Folder;
+  std::vector<std::string> Pending;
+};
+
 template<typename Writer>
-void Write(vtkDataObject* data, const std::string& path)
+void Write(vtkDataObject* data, OutputFiles& files, const std::string& name)
 {
   vtkNew<Writer> writer;
   // Inline base64, not appended raw data: Debian 12's expat rejects the raw appended section,
@@ -262,10 +320,10 @@ void Write(vtkDataObject* data, const std::string& path)
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToNone(); // zlib took longer than the whole remesh of small meshes
   writer->SetInputData(data);
-  writer->SetFileName(path.c_str());
-  if (writer->Write() != 1)
+  writer->SetFileName(files.Add(name).c_str());
+  if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError)
   {
-    Fail("cannot write '" + path + "'");
+    files.Failed(name, vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()));
   }
 }
 
@@ -321,19 +379,30 @@ void Run(vtkAlgorithm* filter, vtkPolyData* (*sites)(vtkAlgorithm*))
   }
 }
 
+/// Creates the --output folder and checks that files can be made there, before any work.
 std::string OutputFolder(const Options& options)
 {
   if (mkdir(options.Output.c_str(), 0777) != 0 && errno != EEXIST)
   {
-    Fail("cannot create --output directory '" + options.Output + "'");
+    Fail(
+      "cannot create --output directory '" + options.Output + "' (" + std::strerror(errno) + ")");
   }
-  return options.Output + "/";
+  const std::string probe = options.Output + "/.cvt-write-test";
+  std::FILE* file = std::fopen(probe.c_str(), "w");
+  if (!file)
+  {
+    Fail(
+      "cannot write in --output directory '" + options.Output + "' (" + std::strerror(errno) + ")");
+  }
+  std::fclose(file);
+  std::remove(probe.c_str());
+  return options.Output;
 }
 
 /// sites.csv (x,y or x,y,z per line: the --initial-sites format) and history.csv.
-void WriteCsv(vtkPolyData* sites, vtkTable* history, int dimensions, const std::string& dir)
+void WriteCsv(vtkPolyData* sites, vtkTable* history, int dimensions, OutputFiles& files)
 {
-  std::ofstream csv(dir + "sites.csv");
+  std::ofstream csv(files.Add("sites.csv"));
   csv << std::setprecision(17);
   for (vtkIdType i = 0; i < sites->GetNumberOfPoints(); ++i)
   {
@@ -346,7 +415,7 @@ void WriteCsv(vtkPolyData* sites, vtkTable* history, int dimensions, const std::
     }
     csv << "\n";
   }
-  std::ofstream out(dir + "history.csv");
+  std::ofstream out(files.Add("history.csv"));
   out << "iteration,evaluations,energy,gradient_norm,seconds\n" << std::setprecision(12);
   for (vtkIdType r = 0; r < history->GetNumberOfRows(); ++r)
   {
@@ -356,16 +425,20 @@ void WriteCsv(vtkPolyData* sites, vtkTable* history, int dimensions, const std::
         << history->GetValueByName(r, "gradient_norm").ToDouble() << ","
         << history->GetValueByName(r, "seconds").ToDouble() << "\n";
   }
-  if (!csv || !out)
+  for (auto [stream, name] : { std::make_pair(&csv, "sites.csv"), { &out, "history.csv" } })
   {
-    Fail("cannot write the CSV files in '" + dir + "'");
+    stream->close();
+    if (stream->fail())
+    {
+      files.Failed(name, std::strerror(errno));
+    }
   }
 }
 
 /// Whether cvt.png was written (the summary lists only the files that were).
 bool PictureWritten = false;
 
-void WritePicture(vtkImageData* picture, const std::string& error, const std::string& path)
+void WritePicture(vtkImageData* picture, const std::string& error, OutputFiles& files)
 {
   PictureWritten = picture != nullptr;
   if (!picture)
@@ -376,8 +449,12 @@ void WritePicture(vtkImageData* picture, const std::string& error, const std::st
   }
   vtkNew<vtkPNGWriter> png;
   png->SetInputData(picture);
-  png->SetFileName(path.c_str());
+  png->SetFileName(files.Add("cvt.png").c_str());
   png->Write();
+  if (png->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    files.Failed("cvt.png", vtkErrorCode::GetStringFromErrorCode(png->GetErrorCode()));
+  }
 }
 
 double Field(vtkDataObject* data, const char* name)
@@ -429,6 +506,7 @@ void SetOptimizer(const Options& options, Filter* filter)
 
 int RunImage(const Options& options)
 {
+  OutputFolder(options); // before any work: a folder that cannot be written fails now
   vtkSmartPointer<vtkImageData> image = ReadDensityImage(options);
   vtkNew<vtkCVTImageFilter> cvt;
   cvt->SetInputData(image);
@@ -447,15 +525,15 @@ int RunImage(const Options& options)
                                             : vtkCVTImageFilter::AUTO);
   Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTImageFilter*>(f)->GetSitesOutput(); });
 
-  const std::string dir = OutputFolder(options);
+  OutputFiles files(OutputFolder(options));
   vtkPolyData* sites = cvt->GetSitesOutput();
-  Write<vtkXMLPolyDataWriter>(sites, dir + "sites.vtp");
-  Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), dir + "labels.vti");
-  Write<vtkXMLPolyDataWriter>(cvt->GetDualOutput(), dir + "dual.vtp");
-  WriteCsv(sites, cvt->GetHistoryOutput(), 2, dir);
+  Write<vtkXMLPolyDataWriter>(sites, files, "sites.vtp");
+  Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), files, "labels.vti");
+  Write<vtkXMLPolyDataWriter>(cvt->GetDualOutput(), files, "dual.vtp");
+  WriteCsv(sites, cvt->GetHistoryOutput(), 2, files);
   vtkNew<vtkCVTSceneRenderer> scene;
-  WritePicture(
-    scene->Render(cvt->GetLabelsOutput(), sites), scene->GetLastError(), dir + "cvt.png");
+  WritePicture(scene->Render(cvt->GetLabelsOutput(), sites), scene->GetLastError(), files);
+  files.Commit();
 
   if (options.Report)
   {
@@ -551,6 +629,7 @@ int RunRemesh(const Options& options)
   const auto seconds = [](Clock::time_point from)
   { return std::chrono::duration<double>(Clock::now() - from).count(); };
   const Clock::time_point start = Clock::now();
+  OutputFolder(options); // before any work: a folder that cannot be written fails now
   vtkSmartPointer<vtkAlgorithm> reader = MeshReader(options);
   ProbeReader(reader, options.Input);
   vtkNew<ErrorObserver> readErrors;
@@ -575,16 +654,17 @@ int RunRemesh(const Options& options)
   const double cvtSeconds = seconds(optimise);
 
   const Clock::time_point write = Clock::now();
-  const std::string dir = OutputFolder(options);
+  OutputFiles files(OutputFolder(options));
   vtkPolyData* sites = cvt->GetSitesOutput();
   vtkPolyData* remesh = cvt->GetRemeshOutput();
-  Write<vtkXMLPolyDataWriter>(sites, dir + "sites.vtp");
-  Write<vtkXMLPolyDataWriter>(cvt->GetLabelsOutput(), dir + "labels.vtp");
-  Write<vtkXMLPolyDataWriter>(remesh, dir + "remesh.vtp");
-  WriteCsv(sites, cvt->GetHistoryOutput(), 3, dir);
+  Write<vtkXMLPolyDataWriter>(sites, files, "sites.vtp");
+  Write<vtkXMLPolyDataWriter>(cvt->GetLabelsOutput(), files, "labels.vtp");
+  Write<vtkXMLPolyDataWriter>(remesh, files, "remesh.vtp");
+  WriteCsv(sites, cvt->GetHistoryOutput(), 3, files);
   const double writeSeconds = seconds(write);
   vtkNew<vtkCVTSceneRenderer> scene;
-  WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), dir + "cvt.png");
+  WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), files);
+  files.Commit();
   if (options.Report)
   {
     vtkFieldData* in = sites->GetFieldData();
@@ -637,6 +717,7 @@ int RunSurface(const Options& options)
   {
     return RunRemesh(options);
   }
+  OutputFolder(options); // before any work: a folder that cannot be written fails now
   vtkSmartPointer<vtkAlgorithm> geometryImage = SurfaceGeometryImage(options);
   vtkNew<ErrorObserver> meshErrors;
   geometryImage->AddObserver(vtkCommand::ErrorEvent, meshErrors);
@@ -653,15 +734,16 @@ int RunSurface(const Options& options)
                                             : vtkCVTSurfaceFilter::AUTO);
   Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTSurfaceFilter*>(f)->GetSitesOutput(); });
 
-  const std::string dir = OutputFolder(options);
+  OutputFiles files(OutputFolder(options));
   vtkPolyData* sites = cvt->GetSitesOutput();
   vtkPolyData* remesh = cvt->GetRemeshOutput();
-  Write<vtkXMLPolyDataWriter>(sites, dir + "sites.vtp");
-  Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), dir + "labels.vti");
-  Write<vtkXMLPolyDataWriter>(remesh, dir + "remesh.vtp");
-  WriteCsv(sites, cvt->GetHistoryOutput(), 3, dir);
+  Write<vtkXMLPolyDataWriter>(sites, files, "sites.vtp");
+  Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), files, "labels.vti");
+  Write<vtkXMLPolyDataWriter>(remesh, files, "remesh.vtp");
+  WriteCsv(sites, cvt->GetHistoryOutput(), 3, files);
   vtkNew<vtkCVTSceneRenderer> scene;
-  WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), dir + "cvt.png");
+  WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), files);
+  files.Commit();
 
   if (options.Report)
   {
@@ -709,6 +791,9 @@ int RunSurface(const Options& options)
 
 int main(int argc, char* argv[])
 {
+  // Past a file-size limit (ulimit -f), writes fail with EFBIG and are reported; the default
+  // action would kill the program.
+  std::signal(SIGXFSZ, SIG_IGN);
   Options options;
   try
   {
