@@ -319,6 +319,7 @@ void Write(vtkDataObject* data, OutputFiles& files, const std::string& name)
   // so VTK and ParaView there could not read the files back.
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToNone(); // zlib took longer than the whole remesh of small meshes
+  writer->SetHeaderTypeToUInt64(); // 32-bit block headers fail past 4 GB (32768^2 labels)
   writer->SetInputData(data);
   writer->SetFileName(files.Add(name).c_str());
   if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError)

@@ -24,18 +24,12 @@ EngineChoice ProbeOpenGL()
     choice.Reason = "Auto: no OpenGL context (" + context->GetLastError() + ")";
     return choice;
   }
-  std::string renderer = context->GetDescription();
-  std::transform(renderer.begin(), renderer.end(), renderer.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  for (const char* software : { "llvmpipe", "softpipe", "swrast", "software rasterizer" })
+  if (context->IsSoftwareRenderer())
   {
-    if (renderer.find(software) != std::string::npos)
-    {
-      choice.Name = "CPU";
-      choice.Reason =
-        "Auto: the only OpenGL is a software renderer (" + context->GetDescription() + ")";
-      return choice;
-    }
+    choice.Name = "CPU";
+    choice.Reason =
+      "Auto: the only OpenGL is a software renderer (" + context->GetDescription() + ")";
+    return choice;
   }
   choice.UseOpenGL = true;
   choice.Name = "OpenGL";

@@ -76,6 +76,12 @@ int vtkCVTGeometryImageSource::RequestData(
     vtkErrorMacro("The resolution " << w << " x " << h << " is too small; use at least 2 x 2.");
     return 0;
   }
+  const std::string memory = cvtvtk::GeometryImageMemoryError(w, h);
+  if (!memory.empty())
+  {
+    vtkErrorMacro("The geometry image is too large for this machine: " << memory << ".");
+    return 0;
+  }
   vtkParametricFunction* f = this->ParametricFunction;
   cvt::GeometryImage image;
   image.Width = w;

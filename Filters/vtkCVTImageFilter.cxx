@@ -4,6 +4,7 @@
 #include "cvtExactVoronoi.h"
 #include "cvtLBFGS.h"
 #include "cvtLloyd.h"
+#include "cvtMemory.h"
 #include "cvtQuality.h"
 #include "cvtSampling.h"
 #include "vtkCVTEngineChoice.h"
@@ -250,6 +251,18 @@ bool vtkCVTImageFilter::Compute(
   grid.Spacing[1] = spacing[1];
   grid.Origin[0] = origin[0] + (extent[0] - 0.5) * spacing[0];
   grid.Origin[1] = origin[1] + (extent[2] - 0.5) * spacing[1];
+
+  // The filter's own arrays (the density and the labels output, 4 bytes per pixel each); the
+  // engines check their own needs before they allocate.
+  const std::string memory =
+    cvt::CheckMemory(8.0 * static_cast<double>(grid.NumberOfPixels()), cvt::AvailableSystemMemory(),
+      "an image of " + std::to_string(grid.Width) + " x " + std::to_string(grid.Height) + " pixels",
+      "memory", "use a coarser image");
+  if (!memory.empty())
+  {
+    vtkErrorMacro("The image is too large for this machine: " << memory << ".");
+    return false;
+  }
 
   // --- The density.
   std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);

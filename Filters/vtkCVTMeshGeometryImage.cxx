@@ -62,6 +62,13 @@ int vtkCVTMeshGeometryImage::RequestData(
     vtkErrorMacro("The resolution must be at least 2 x 2.");
     return 0;
   }
+  const std::string memory =
+    cvtvtk::GeometryImageMemoryError(this->Resolution[0], this->Resolution[1]);
+  if (!memory.empty())
+  {
+    vtkErrorMacro("The geometry image is too large for this machine: " << memory << ".");
+    return 0;
+  }
   if (input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips() > 0)
   {
     vtkErrorMacro(

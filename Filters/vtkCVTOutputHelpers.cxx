@@ -3,6 +3,7 @@
 #include "cvtSurface.h"
 
 #include "cvtEngine.h"
+#include "cvtMemory.h"
 #include "cvtQuality.h"
 
 #include "vtkAlgorithm.h"
@@ -222,6 +223,16 @@ int FinishRequest(vtkInformationVector* outputs, bool succeeded, bool failPipeli
     }
   }
   return failPipeline ? 0 : 1;
+}
+
+//------------------------------------------------------------------------------
+std::string GeometryImageMemoryError(int width, int height)
+{
+  // Position and normal (12 bytes each), area weight (4) as floats, then as VTK arrays with the
+  // mask (29): 57 bytes per pixel.
+  return cvt::CheckMemory(57.0 * width * static_cast<double>(height), cvt::AvailableSystemMemory(),
+    "a geometry image of " + std::to_string(width) + " x " + std::to_string(height) + " pixels",
+    "memory", "use a smaller resolution");
 }
 
 } // namespace cvtvtk

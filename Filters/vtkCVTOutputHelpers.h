@@ -84,6 +84,10 @@ void FillHistoryTable(vtkTable* table, const std::vector<cvt::HistoryEntry>& his
 /// data WrapU, WrapV, MinimumAreaWeight, MaximumAreaWeight, TotalArea.
 void WriteGeometryImage(const cvt::GeometryImage& image, vtkImageData* output);
 
+/// "" or why a geometry image of width x height pixels does not fit in this machine's memory
+/// (checked before the sources allocate it: its arrays and their VTK copies).
+std::string GeometryImageMemoryError(int width, int height);
+
 } // namespace cvtvtk
 
 #endif

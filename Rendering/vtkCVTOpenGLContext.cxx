@@ -1,4 +1,5 @@
 #include "vtkCVTOpenGLContext.h"
+#include "cvtMemory.h"
 
 #include "vtkAutoInit.h"
 #include "vtkCVTEGLRenderWindow.h"
@@ -10,7 +11,10 @@
 #include <EGL/egl.h>
 #include <GL/glx.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
+#include <cstring>
 
 // vtkRenderWindow::New() yields a stub unless the OpenGL2 factory overrides are registered.
 VTK_MODULE_INIT(vtkRenderingOpenGL2);
@@ -127,8 +131,48 @@ bool vtkCVTOpenGLContext::Initialize()
   GLint size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
   this->MaximumTextureSize = size;
+  std::string lower = renderer ? renderer : "";
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  this->SoftwareRenderer = false;
+  for (const char* software : { "llvmpipe", "softpipe", "swrast", "software rasterizer" })
+  {
+    this->SoftwareRenderer = this->SoftwareRenderer || lower.find(software) != std::string::npos;
+  }
+  GLint extensions = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);
+  this->HasMemoryInfo = false;
+  for (GLint i = 0; i < extensions && !this->HasMemoryInfo; ++i)
+  {
+    const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+    this->HasMemoryInfo = name && std::strcmp(name, "GL_NVX_gpu_memory_info") == 0;
+  }
   this->RestorePrevious();
   return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkCVTOpenGLContext::GetAvailableMemory() const
+{
+  if (!this->Window)
+  {
+    return 0.0;
+  }
+  if (this->SoftwareRenderer)
+  {
+    return cvt::AvailableSystemMemory();
+  }
+  if (!this->HasMemoryInfo)
+  {
+    return 0.0;
+  }
+  constexpr GLenum CurrentAvailableVideoMemoryNVX = 0x9049; // in KiB
+  auto* self = const_cast<vtkCVTOpenGLContext*>(this);
+  self->MakeCurrent();
+  GLint kilobytes = 0;
+  glGetIntegerv(CurrentAvailableVideoMemoryNVX, &kilobytes);
+  self->RestorePrevious();
+  return 1024.0 * kilobytes;
 }
 
 //------------------------------------------------------------------------------
@@ -203,6 +247,7 @@ void vtkCVTOpenGLContext::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Context: " << (this->Window ? this->Description : std::string("(none)")) << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
+  os << indent << "SoftwareRenderer: " << this->SoftwareRenderer << "\n";
   if (!this->LastError.empty())
   {
     os << indent << "LastError: " << this->LastError << "\n";

@@ -42,6 +42,13 @@ public:
   const std::string& GetDescription() const { return this->Description; }
   /** Largest texture side the context supports. */
   int GetMaximumTextureSize() const { return this->MaximumTextureSize; }
+  /** Whether the renderer draws on the CPU (llvmpipe, softpipe, swrast). */
+  bool IsSoftwareRenderer() const { return this->SoftwareRenderer; }
+  /**
+   * Bytes free for textures, 0 when unknown: the GPU's free memory where the driver tells it
+   * (NVIDIA's GL_NVX_gpu_memory_info), the system's available memory for software renderers.
+   */
+  double GetAvailableMemory() const;
 
 protected:
   vtkCVTOpenGLContext();
@@ -57,6 +64,8 @@ private:
   std::string LastError;
   std::string Description;
   int MaximumTextureSize = 0;
+  bool SoftwareRenderer = false;
+  bool HasMemoryInfo = false; // GL_NVX_gpu_memory_info
 };
 
 #endif

@@ -1,4 +1,5 @@
 #include "vtkCVTOpenGLEngine.h"
+#include "cvtMemory.h"
 
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
@@ -171,6 +172,20 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
         << " pixels exceeds this GPU's largest texture (" << maximumSize << " x " << maximumSize
         << "); use a coarser image";
     return this->Fail(msg.str());
+  }
+  // Textures per pixel: density (4 bytes), two seed buffers and the candidates (16 each), the
+  // split pieces (16 each); a software renderer keeps them in system memory with its own copies
+  // (170 bytes per pixel measured with llvmpipe).
+  const double pixels = static_cast<double>(grid.NumberOfPixels());
+  const bool software = this->Context->IsSoftwareRenderer();
+  const std::string memory = cvt::CheckMemory(
+    pixels * (software ? 170.0 : 52.0 + 16.0 * MaxCandidates), this->Context->GetAvailableMemory(),
+    "the OpenGL engine's domain of " + std::to_string(grid.Width) + " x " +
+      std::to_string(grid.Height) + " pixels",
+    software ? "memory (software OpenGL)" : "GPU memory", "use a coarser image or the CPU engine");
+  if (!memory.empty())
+  {
+    return this->Fail(memory);
   }
 
   ScopedContext current(this->Context);

@@ -92,6 +92,8 @@ public:
 
   /** Which OpenGL context the engine runs on (empty before SetDomain). */
   std::string GetContextDescription() const;
+  /** The engine's own OpenGL context (tests count its live objects). */
+  vtkCVTOpenGLContext* GetContext() const { return this->Context; }
 
   /** Free every GL object now (also done on destruction). */
   void ReleaseGraphicsResources();

@@ -1,4 +1,5 @@
 #include "vtkCVTSurfaceEngine.h"
+#include "cvtMemory.h"
 
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
@@ -148,6 +149,22 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
         << " pixels exceeds this GPU's largest texture (" << maximumSize << " x " << maximumSize
         << "); use a smaller one";
     return this->Fail(msg.str());
+  }
+  // Textures per pixel: positions, two seed buffers and nearest points (16 bytes each), area
+  // weight, nearest corner and depth (4 each); a software renderer keeps them in system memory
+  // with its own copies (measured with llvmpipe).
+  const double bytesPerPixel = this->Context->IsSoftwareRenderer() ? 150.0 : 76.0;
+  const bool software = this->Context->IsSoftwareRenderer();
+  const std::string memory =
+    cvt::CheckMemory(static_cast<double>(image.NumberOfPixels()) * bytesPerPixel,
+      this->Context->GetAvailableMemory(),
+      "the OpenGL engine's geometry image of " + std::to_string(image.Width) + " x " +
+        std::to_string(image.Height) + " pixels",
+      software ? "memory (software OpenGL)" : "GPU memory",
+      "use a smaller geometry image or the CPU engine");
+  if (!memory.empty())
+  {
+    return this->Fail(memory);
   }
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();

@@ -50,6 +50,8 @@ public:
   double GetLastReductionMilliseconds() const { return this->LastReductionMilliseconds; }
 
   std::string GetContextDescription() const;
+  /** The engine's own OpenGL context (tests count its live objects). */
+  vtkCVTOpenGLContext* GetContext() const { return this->Context; }
   void ReleaseGraphicsResources();
 
 protected:

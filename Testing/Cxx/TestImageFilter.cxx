@@ -592,6 +592,22 @@ TEST(ImageFilterBadInput, GridBeyondTheLargestTexture)
   EXPECT_TRUE(Contains(RunExpectingError(filter), "largest texture"));
 }
 
+TEST(ImageFilterBadInput, ImageBeyondThisMachinesMemory)
+{
+  // 200000 x 200000 pixels without arrays (uniform density): nothing allocated yet, but the
+  // filter's arrays alone would take 320 GB. Refused before allocating, on either engine.
+  for (int engine : { vtkCVTImageFilter::CPU, vtkCVTImageFilter::AUTO })
+  {
+    vtkNew<vtkCVTImageFilter> filter;
+    filter->SetInputData(MakeImage(200000, 200000));
+    filter->SetNumberOfSites(3);
+    filter->SetEngine(engine);
+    const std::string message = RunExpectingError(filter);
+    EXPECT_TRUE(Contains(message, "too large for this machine")) << message;
+    EXPECT_TRUE(Contains(message, "needs about 320 GB of memory")) << message;
+  }
+}
+
 TEST(ImageFilterBadInput, NoOpenGLContext)
 {
   setenv("CVT_OPENGL_CONTEXT", "none", 1);
@@ -602,6 +618,27 @@ TEST(ImageFilterBadInput, NoOpenGLContext)
   const std::string message = RunExpectingError(filter);
   unsetenv("CVT_OPENGL_CONTEXT");
   EXPECT_TRUE(Contains(message, "no OpenGL >= 3.2 context"));
+}
+
+TEST(ImageFilterBadInput, OpenGLLostBetweenUpdates)
+{
+  // A result, then OpenGL goes away (a driver reset, a server losing its GPU: simulated by
+  // forbidding every context), then it comes back. Each update makes its own context, so the
+  // second update fails cleanly with empty outputs and the third works again.
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(16, 16));
+  filter->SetNumberOfSites(4);
+  filter->SetEngineToOpenGL();
+  filter->Update();
+  ASSERT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 4);
+  setenv("CVT_OPENGL_CONTEXT", "none", 1);
+  filter->SetNumberOfSites(5);
+  const std::string message = RunExpectingError(filter);
+  unsetenv("CVT_OPENGL_CONTEXT");
+  EXPECT_TRUE(Contains(message, "no OpenGL >= 3.2 context")) << message;
+  filter->SetNumberOfSites(6);
+  filter->Update();
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 6);
 }
 
 TEST(ImageFilterBadInput, ThenAGoodRunStillWorks)

@@ -1,3 +1,4 @@
+#include "cvtMemory.h"
 #include "cvtSampling.h"
 
 #include <gtest/gtest.h>
@@ -57,4 +58,13 @@ TEST(Sampling, SiteChecksSayWhatIsWrong)
   EXPECT_NE(cvt::CheckSites(grid, { 0.1, 0.1, 0.1, 0.1 }).find("duplicates"), std::string::npos);
   EXPECT_NE(cvt::CheckSites(grid, { 0, 0, 0.1, 0, 0.2, 0, 0.3, 0, 0.4, 0 }).find("more than"),
     std::string::npos);
+}
+
+TEST(Memory, CheckMemorySaysWhatItNeedsAndWhatThereIs)
+{
+  EXPECT_EQ(cvt::CheckMemory(8e9, 10e9, "x", "memory", "advice"), "");
+  EXPECT_EQ(cvt::CheckMemory(8e9, 0.0, "x", "memory", "advice"), ""); // unknown: no check
+  EXPECT_EQ(cvt::CheckMemory(9.5e9, 10e9, "an image", "memory", "use less"),
+    "an image needs about 9.5 GB of memory; 10 GB are available: use less");
+  EXPECT_GT(cvt::AvailableSystemMemory(), 1e6);
 }

@@ -3,6 +3,8 @@
 #include "cvtSurface.h"
 #include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTMeshGeometryImage.h"
+#include "vtkCVTOpenGLContext.h"
+#include "vtkCVTOpenGLEngine.h"
 #include "vtkCVTSurfaceEngine.h"
 #include "vtkCVTSurfaceFilter.h"
 
@@ -26,6 +28,7 @@
 #include "vtkTable.h"
 #include "vtkTriangle.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
 
 #include <gtest/gtest.h>
 
@@ -33,6 +36,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 
 namespace
@@ -464,6 +468,18 @@ std::string MeshError(vtkPolyData* mesh)
 }
 }
 
+TEST(GeometryImageSource, BeyondThisMachinesMemoryIsRefusedBeforeAllocating)
+{
+  vtkNew<vtkCVTGeometryImageSource> source;
+  vtkNew<ErrorCatcher> catcher;
+  source->AddObserver(vtkCommand::ErrorEvent, catcher);
+  source->SetResolution(200000, 200000); // 2.3 TB
+  source->Update();
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_NE(catcher->Message.find("too large for this machine"), std::string::npos)
+    << catcher->Message;
+}
+
 TEST(MeshGeometryImage, DiskMeshIsParameterisedResampledAndRemeshed)
 {
   auto mesh = Hemisphere();
@@ -666,4 +682,81 @@ TEST(SurfaceFilter, CPUAndOpenGLEnginesAgreeOnTheTorus)
     energy[engine == vtkCVTSurfaceFilter::CPU] = DenseTorusEnergy(sites);
   }
   EXPECT_NEAR(energy[1], energy[0], 0.01 * energy[0]);
+}
+
+namespace
+{
+/// Live OpenGL objects of a context: the names up to 4096 that are textures, framebuffers,
+/// renderbuffers, buffers, vertex arrays, programs or shaders (names are small integers,
+/// handed out from 1; a leak of one per update passes 4096 in a soak).
+int LiveGLObjects(vtkCVTOpenGLContext* context)
+{
+  context->MakeCurrent();
+  int live = 0;
+  for (GLuint name = 1; name <= 4096; ++name)
+  {
+    live += (glIsTexture(name) ? 1 : 0) + (glIsFramebuffer(name) ? 1 : 0) +
+      (glIsRenderbuffer(name) ? 1 : 0) + (glIsBuffer(name) ? 1 : 0) +
+      (glIsVertexArray(name) ? 1 : 0) + (glIsProgram(name) ? 1 : 0) + (glIsShader(name) ? 1 : 0);
+  }
+  context->RestorePrevious();
+  return live;
+}
+} // namespace
+
+// Engines kept across updates (as the filters will, issue 8) must not pile up GL objects: after
+// a warm-up, 200 rounds of new site counts, evaluations, Lloyd steps, nearest points and a new
+// domain every 50 rounds leave the same number of live objects.
+TEST(GLObjects, EnginesStopGrowing)
+{
+  std::mt19937 random(5);
+  vtkNew<vtkCVTOpenGLEngine> flat;
+  cvt::Grid grid;
+  grid.Width = grid.Height = 64;
+  const std::vector<float> density(64 * 64, 1.0f);
+  const cvt::GeometryImage gi = ToGeometryImage(Torus(64, 32));
+  vtkNew<vtkCVTSurfaceEngine> surface;
+  int warm[2] = { 0, 0 };
+  for (int round = 0; round < 250; ++round)
+  {
+    const int n = 20 + static_cast<int>(random() % 7);
+    if (round % 50 == 0)
+    {
+      ASSERT_TRUE(flat->SetDomain(grid, density)) << flat->GetLastError();
+      ASSERT_TRUE(surface->SetGeometryImage(gi)) << surface->GetLastError();
+    }
+    std::vector<double> sites(2 * static_cast<size_t>(n));
+    for (double& c : sites)
+    {
+      c = std::uniform_real_distribution<double>(0.5, 63.5)(random);
+    }
+    cvt::CellSums sums;
+    ASSERT_TRUE(
+      flat->SetSites(sites) && flat->ComputeCellSums(sums) && flat->MoveSitesToCentroids())
+      << flat->GetLastError();
+    std::vector<long long> pixels;
+    std::vector<double> onSurface = cvt::SampleSurfaceSites(gi, n, round, pixels);
+    ASSERT_TRUE(surface->SetSites(onSurface, pixels) && surface->ComputeCellSums(sums))
+      << surface->GetLastError();
+    std::vector<double> nearest = onSurface;
+    ASSERT_TRUE(surface->NearestPointsInCells(onSurface, nearest, pixels))
+      << surface->GetLastError();
+    if (round == 49)
+    {
+      warm[0] = LiveGLObjects(flat->GetContext());
+      warm[1] = LiveGLObjects(surface->GetContext());
+    }
+  }
+  const int after[2] = { LiveGLObjects(flat->GetContext()), LiveGLObjects(surface->GetContext()) };
+  std::cout << "[ measured ] live GL objects after warm-up / after 200 more rounds: 2D engine "
+            << warm[0] << " / " << after[0] << ", surface engine " << warm[1] << " / " << after[1]
+            << "\n";
+  EXPECT_GT(warm[0], 5);
+  EXPECT_GT(warm[1], 5);
+  EXPECT_EQ(after[0], warm[0]) << "the 2D engine leaks GL objects";
+  EXPECT_EQ(after[1], warm[1]) << "the surface engine leaks GL objects";
+  flat->ReleaseGraphicsResources();
+  surface->ReleaseGraphicsResources();
+  std::cout << "[ measured ] after ReleaseGraphicsResources: " << LiveGLObjects(flat->GetContext())
+            << " and " << LiveGLObjects(surface->GetContext()) << "\n";
 }
