@@ -697,7 +697,8 @@ int RunRemesh(const Options& options)
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
               << Field(remesh, "SplitVertices") << " pinched vertices split, "
-              << Field(remesh, "FlippedEdges") << " edges flipped)\n"
+              << Field(remesh, "FlippedEdges") << " edges flipped, "
+              << Field(remesh, "MovedVertices") << " vertices moved)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "

@@ -290,7 +290,7 @@ bool vtkCVTRemeshFilter::Compute(
     return false;
   }
   FillLabels(labelsOut, triangles, mesh, engine.GetPointLabels());
-  const cvt::Remesh remesh = cvt::BuildRemesh(dual, inputTopology.Loops.size());
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, inputTopology.Loops.size(), 8, &mesh);
   const cvt::CellSums& sums = result.Sums;
   const std::vector<double>& sites = result.Sites;
 
@@ -352,6 +352,7 @@ bool vtkCVTRemeshFilter::Compute(
   cvtvtk::AddFieldValue(remeshFields, "FilledHoles", remesh.FilledHoles);
   cvtvtk::AddFieldValue(remeshFields, "SplitVertices", remesh.SplitVertices);
   cvtvtk::AddFieldValue(remeshFields, "FlippedEdges", remesh.FlippedEdges);
+  cvtvtk::AddFieldValue(remeshFields, "MovedVertices", remesh.MovedVertices);
   const cvt::MeshTopology remeshTopology =
     cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
   AddTopology(remeshFields, "", remeshTopology);

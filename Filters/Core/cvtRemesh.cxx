@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "cvtPointCloud.h"
+
 namespace cvt
 {
 
@@ -138,9 +140,236 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
   }
   return flips;
 }
+
+/// The point of triangle (a, b, c) nearest to p, with its barycentric coordinates (Ericson,
+/// Real-Time Collision Detection, 5.1.5).
+void ClosestPointOnTriangle(
+  const double* p, const double* a, const double* b, const double* c, double out[3], double w[3])
+{
+  double ab[3], ac[3], ap[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    ab[k] = b[k] - a[k];
+    ac[k] = c[k] - a[k];
+    ap[k] = p[k] - a[k];
+  }
+  const auto dot = [](const double* u, const double* v)
+  { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  const auto set = [&](double u, double v, double x)
+  {
+    w[0] = u;
+    w[1] = v;
+    w[2] = x;
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] = u * a[k] + v * b[k] + x * c[k];
+    }
+  };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0)
+    return set(1, 0, 0);
+  double bp[3], cp[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    bp[k] = p[k] - b[k];
+    cp[k] = p[k] - c[k];
+  }
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3)
+    return set(0, 1, 0);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  {
+    const double v = d1 / (d1 - d3);
+    return set(1 - v, v, 0);
+  }
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6)
+    return set(0, 0, 1);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  {
+    const double x = d2 / (d2 - d6);
+    return set(1 - x, 0, x);
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  {
+    const double x = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return set(0, 1 - x, x);
+  }
+  const double denominator = 1.0 / (va + vb + vc);
+  const double v = vb * denominator, x = vc * denominator;
+  set(1 - v - x, v, x);
 }
 
-Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
+/// Moves free (not pinned) vertices of triangles with a corner under 30 degrees to the mean of
+/// their neighbours, projected onto the input surface, wherever that raises the smallest angle
+/// around them without turning a triangle over: cells cut by a crease leave a few thin
+/// triangles that no flip mends. Returns the number of vertices moved.
+int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const SurfaceMesh& surface)
+{
+  const double thin = 30.0 * 3.14159265358979323846 / 180.0;
+  const int vertices = static_cast<int>(remesh.SiteIds.size());
+  std::vector<std::vector<int>> around(static_cast<size_t>(vertices)); // incident triangles
+  for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
+  {
+    for (int v : remesh.Triangles[t])
+    {
+      around[static_cast<size_t>(v)].push_back(t);
+    }
+  }
+  // The input's triangle centroids in a k-d tree: the projection looks at the nearest few.
+  std::vector<double> centroids(3 * static_cast<size_t>(surface.NumberOfTriangles()));
+  for (int t = 0; t < surface.NumberOfTriangles(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      centroids[3 * t + k] =
+        (surface.Point(surface.Triangles[t][0])[k] + surface.Point(surface.Triangles[t][1])[k] +
+          surface.Point(surface.Triangles[t][2])[k]) /
+        3.0;
+    }
+  }
+  PointCloud<3> cloud;
+  cloud.Points = &centroids;
+  PointTree<3> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  // Nearest point of the input among the triangles of the 16 nearest centroids.
+  const auto nearestOnSurface = [&](const double* p, double q[3], double w[3])
+  {
+    constexpr size_t Candidates = 16;
+    std::uint32_t ids[Candidates];
+    double distances[Candidates];
+    const size_t found = tree.knnSearch(p, Candidates, ids, distances);
+    double bestDistance = 1e300;
+    int best = -1;
+    for (size_t c = 0; c < found; ++c)
+    {
+      const auto& tri = surface.Triangles[ids[c]];
+      double candidate[3], weights[3];
+      ClosestPointOnTriangle(
+        p, surface.Point(tri[0]), surface.Point(tri[1]), surface.Point(tri[2]), candidate, weights);
+      const double d = (candidate[0] - p[0]) * (candidate[0] - p[0]) +
+        (candidate[1] - p[1]) * (candidate[1] - p[1]) +
+        (candidate[2] - p[2]) * (candidate[2] - p[2]);
+      if (d < bestDistance)
+      {
+        bestDistance = d;
+        std::copy(candidate, candidate + 3, q);
+        std::copy(weights, weights + 3, w);
+        best = static_cast<int>(ids[c]);
+      }
+    }
+    return best;
+  };
+  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
+  // How far the centroids of v's triangles are from the input, with v at `at`: a move must
+  // not cut across a crease (the input would then lie far from the remesh).
+  const auto farthestCentroid = [&](int v, const double* at)
+  {
+    double farthest = 0.0;
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      double c[3] = { 0.0, 0.0, 0.0 }, q[3], w[3];
+      for (int u : remesh.Triangles[static_cast<size_t>(t)])
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          c[k] += (u == v ? at[k] : point(u)[k]) / 3.0;
+        }
+      }
+      if (nearestOnSurface(c, q, w) >= 0)
+      {
+        farthest = std::max(farthest,
+          std::sqrt((q[0] - c[0]) * (q[0] - c[0]) + (q[1] - c[1]) * (q[1] - c[1]) +
+            (q[2] - c[2]) * (q[2] - c[2])));
+      }
+    }
+    return farthest;
+  };
+  const auto smallestAround = [&](int v, const double* at, double& smallest)
+  {
+    // The smallest angle of v's triangles with v at `at`; false if one turns over.
+    smallest = 10.0;
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+      const double* p[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = tri[k] == v ? at : point(tri[k]);
+      }
+      double before[3], after[3], angle[3];
+      UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), before);
+      UnitNormal(p[0], p[1], p[2], after);
+      if (before[0] * after[0] + before[1] * after[1] + before[2] * after[2] < 0.7)
+      {
+        return false;
+      }
+      CornerAngles(p[0], p[1], p[2], angle);
+      smallest = std::min(smallest, *std::min_element(angle, angle + 3));
+    }
+    return true;
+  };
+  int moved = 0;
+  for (int round = 0; round < 3; ++round)
+  {
+    int movedThisRound = 0;
+    for (int v = 0; v < vertices; ++v)
+    {
+      double current = 0.0;
+      if (pinned[static_cast<size_t>(v)] || around[static_cast<size_t>(v)].empty() ||
+        !smallestAround(v, point(v), current) || current >= thin)
+      {
+        continue;
+      }
+      double mean[3] = { 0.0, 0.0, 0.0 };
+      int count = 0;
+      for (int t : around[static_cast<size_t>(v)])
+      {
+        for (int u : remesh.Triangles[static_cast<size_t>(t)])
+        {
+          if (u != v)
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              mean[k] += point(u)[k];
+            }
+            ++count;
+          }
+        }
+      }
+      for (double& m : mean)
+      {
+        m /= count;
+      }
+      double best[3], bestWeights[3];
+      const int bestTriangle = nearestOnSurface(mean, best, bestWeights);
+      double after = 0.0;
+      if (bestTriangle < 0 || !smallestAround(v, best, after) || after <= current + 1e-6 ||
+        farthestCentroid(v, best) > 1.1 * farthestCentroid(v, point(v)) + 1e-12)
+      {
+        continue;
+      }
+      std::copy(best, best + 3, point(v));
+      std::copy(
+        bestWeights, bestWeights + 3, &remesh.SourceBarycentric[3 * static_cast<size_t>(v)]);
+      remesh.SourceTriangles[static_cast<size_t>(v)] = bestTriangle;
+      ++movedThisRound;
+    }
+    moved += movedThisRound;
+    if (movedThisRound == 0)
+    {
+      break;
+    }
+  }
+  return moved;
+}
+}
+
+Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole,
+  const SurfaceMesh* surface)
 {
   Remesh remesh;
   // Keep triangles whose directed edges are all new: a second triangle on an edge in the same
@@ -336,6 +565,10 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       pinned[v] = dual.Pinned[static_cast<size_t>(dualOf[v])];
     }
     remesh.FlippedEdges = FlipThinTriangles(remesh.Points, pinned, remesh.Triangles);
+    if (surface)
+    {
+      remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, *surface);
+    }
   }
   // Sheets that meet only at a vertex (a part thinner than the cells, a border touching
   // itself) get a vertex each, so the remesh is manifold at its vertices too.

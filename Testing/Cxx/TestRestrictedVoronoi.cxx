@@ -459,6 +459,51 @@ TEST(RestrictedVoronoi, RemeshFlipsThinTrianglesButNotFeatureEdges)
   }
 }
 
+TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
+{
+  // A fan of six pinned vertices (a hexagon, as along a crease) around a free vertex close to
+  // one of them: its two triangles there have corners of a few degrees, and no flip helps.
+  // Given the input surface (the plane z = 0), the free vertex moves to the middle, on it.
+  std::vector<std::array<double, 3>> points = { { 0.9, 0.0, 0.0 } };
+  std::vector<char> pinned = { 0 };
+  for (int k = 0; k < 6; ++k)
+  {
+    const double angle = k * 3.14159265358979323846 / 3.0;
+    points.push_back({ std::cos(angle), std::sin(angle), 0.0 });
+    pinned.push_back(1);
+  }
+  cvt::RestrictedDual dual = DualAt(points, true, pinned); // the hexagon is the border
+  for (int k = 0; k < 6; ++k)
+  {
+    dual.Triangles.push_back({ 0, 1 + k, 1 + (k + 1) % 6 });
+  }
+  cvt::SurfaceMesh plane;
+  plane.Points = { -2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0 };
+  plane.Triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+  const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
+  const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
+  EXPECT_EQ(before.MovedVertices, 0);
+  EXPECT_EQ(after.MovedVertices, 1);
+  EXPECT_LT(cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle, 10.0);
+  EXPECT_GT(cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle, 55.0);
+
+  const int centre = static_cast<int>(
+    std::find(after.SiteIds.begin(), after.SiteIds.end(), 0) - after.SiteIds.begin());
+  EXPECT_NEAR(after.Points[3 * centre], 0.0, 1e-9);
+  EXPECT_EQ(after.Points[3 * centre + 2], 0.0); // on the surface
+  // Its source triangle and barycentric coordinates give the point back.
+  const auto& source = plane.Triangles[after.SourceTriangles[centre]];
+  for (int c = 0; c < 3; ++c)
+  {
+    double x = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      x += after.SourceBarycentric[3 * centre + k] * plane.Point(source[k])[c];
+    }
+    EXPECT_NEAR(x, after.Points[3 * centre + c], 1e-9);
+  }
+}
+
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
 {
   // A square of two triangles, one flipped, plus a duplicate, a degenerate and an unused point.
