@@ -24,6 +24,14 @@ double AvailableSystemMemory()
   return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * pageSize : 0.0;
 }
 
+double ResidentMemory()
+{
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
 std::string CheckMemory(double bytes, double available, const std::string& what,
   const std::string& where, const std::string& advice)
 {

@@ -14,6 +14,9 @@ namespace cvt
 /// physical pages); 0 when unknown.
 CVTCORE_EXPORT double AvailableSystemMemory();
 
+/// Resident memory of this process in bytes (Linux: /proc/self/statm); 0 when unknown.
+CVTCORE_EXPORT double ResidentMemory();
+
 /// "" when `bytes` fit in 90% of `available` (or `available` is unknown, 0), else a sentence:
 /// "<what> needs about N GB of <where>; M GB are available: <advice>".
 CVTCORE_EXPORT std::string CheckMemory(double bytes, double available, const std::string& what,

@@ -16,11 +16,19 @@
 //            uniform and the paper's density) and the Table 2 job (L-BFGS with the density to
 //            convergence), against the OpenGL engine's time per iteration in the same process;
 //            10,000 sites at 2048x2048.
+//   scaling: milliseconds per Lloyd iteration (median) and resident memory of both engines
+//            against pixels (512^2 .. MAX_SIDE^2, 1000 sites) and against sites (1000 ..
+//            MAX_SITES at MAX_SIDE^2), uniform random sites and density; one CSV line each
+//            ("scaling,engine,side,sites,ms_per_iteration,resident_mib,iterations"), drawn by
+//            Examples/plot_scaling.py. A software OpenGL that needs more than 5 s for one
+//            iteration is measured once and left out of the larger sizes.
 // Usage: cvtBenchmark [timing|targets|surface|cpu|all]
+//        cvtBenchmark scaling [MAX_SIDE (4096)] [MAX_SITES (100000)]
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
 #include "cvtLBFGS.h"
 #include "cvtLloyd.h"
+#include "cvtMemory.h"
 #include "cvtQuality.h"
 #include "cvtSampling.h"
 #include "cvtSurfaceOptimizer.h"
@@ -39,6 +47,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -193,6 +202,88 @@ bool CPUEngine()
   std::printf("CPU engine, 10,000 sites, 2048x2048: %.1f ms per Lloyd iteration (uniform), "
               "%.1f ms (paper's density)\n",
     1e3 * largeRun.Seconds / 10.0, 1e3 * largeDensity.Seconds / 10.0);
+  return true;
+}
+
+/// One point of the scaling curves: `engine` at side x side pixels with `sites` uniform random
+/// sites; up to 5 Lloyd iterations after a warm-up one, within about 10 s. Prints a CSV line;
+/// returns the milliseconds per iteration (negative on failure).
+double ScalingPoint(cvt::Engine& engine, const char* name, int side, int sites)
+{
+  const cvt::Grid grid = cvt::Grid::Square(side, -1.0, 1.0);
+  const double before = cvt::ResidentMemory();
+  const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
+  cvt::CellSums sums;
+  std::vector<double> times;
+  auto start = Clock::now();
+  bool ok =
+    engine.SetDomain(grid, density) && engine.SetSites(cvt::SampleSites(grid, {}, sites, 7));
+  for (int k = 0; ok && k < 6; ++k)
+  {
+    const auto iteration = Clock::now();
+    ok = engine.ComputeCellSums(sums) && engine.MoveSitesToCentroids();
+    const double ms = 1e3 * SecondsSince(iteration);
+    if (k > 0 || ms > 5e3) // the first is a warm-up, unless it is already slow
+    {
+      times.push_back(ms);
+    }
+    if (SecondsSince(start) > 10.0 && !times.empty())
+    {
+      break;
+    }
+  }
+  if (!ok)
+  {
+    std::fprintf(stderr, "%s engine failed at %d^2, %d sites: %s\n", name, side, sites,
+      engine.GetLastError().c_str());
+    return -1.0;
+  }
+  const double resident = (cvt::ResidentMemory() - before) / (1024.0 * 1024.0);
+  std::printf("scaling,%s,%d,%d,%.2f,%.0f,%zu\n", name, side, sites, Median(times),
+    std::max(0.0, resident), times.size());
+  std::fflush(stdout);
+  return Median(times);
+}
+
+bool Scaling(int maximumSide, int maximumSites)
+{
+  std::printf("scaling,engine,side,sites,ms_per_iteration,resident_mib,iterations\n");
+  bool openglTooSlow = false;
+  const auto point = [&](int side, int sites)
+  {
+    {
+      cvt::ExactEngine cpu;
+      if (ScalingPoint(cpu, "CPU", side, sites) < 0.0)
+      {
+        return false;
+      }
+    }
+    if (!openglTooSlow)
+    {
+      vtkNew<vtkCVTOpenGLEngine> gpu;
+      const double ms = ScalingPoint(*gpu, "OpenGL", side, sites);
+      if (ms < 0.0)
+      {
+        return false;
+      }
+      openglTooSlow = ms > 5e3;
+    }
+    return true;
+  };
+  for (int side = 512; side <= maximumSide; side *= 2)
+  {
+    if (!point(side, std::min(1000, side * side / 4)))
+    {
+      return false;
+    }
+  }
+  for (int sites = 10000; sites <= maximumSites; sites *= 10)
+  {
+    if (!point(maximumSide, std::min(sites, maximumSide * maximumSide / 4)))
+    {
+      return false;
+    }
+  }
   return true;
 }
 
@@ -389,9 +480,21 @@ bool SurfaceTarget()
 int main(int argc, char* argv[])
 {
   const std::string what = argc > 1 ? argv[1] : "all";
+  if (what == "scaling")
+  {
+    const int side = argc > 2 ? std::atoi(argv[2]) : 4096;
+    const int sites = argc > 3 ? std::atoi(argv[3]) : 100000;
+    if (side < 512 || sites < 1000)
+    {
+      std::fprintf(stderr, "usage: %s scaling [MAX_SIDE >= 512] [MAX_SITES >= 1000]\n", argv[0]);
+      return 2;
+    }
+    return Scaling(side, sites) ? 0 : 1;
+  }
   if (what != "timing" && what != "targets" && what != "surface" && what != "cpu" && what != "all")
   {
-    std::fprintf(stderr, "usage: %s [timing|targets|surface|cpu|all]\n", argv[0]);
+    std::fprintf(stderr,
+      "usage: %s [timing|targets|surface|cpu|all] | scaling [MAX_SIDE] [MAX_SITES]\n", argv[0]);
     return 2;
   }
   bool ok = true;

@@ -3,6 +3,7 @@
 // kilobytes per update (an engine, a context, a texture or framebuffer in llvmpipe's system
 // memory, an output array) adds up to megabytes over the 250 updates measured. Also two
 // filters with their own engines alternately, and one filter updated from two threads in turn.
+#include "cvtMemory.h"
 #include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTImageFilter.h"
 #include "vtkCVTRemeshFilter.h"
@@ -19,17 +20,13 @@
 #include <fstream>
 #include <functional>
 #include <thread>
-#include <unistd.h>
 
 namespace
 {
-/// Resident memory of this process in MiB (Linux: /proc/self/statm).
+/// Resident memory of this process in MiB.
 double ResidentMiB()
 {
-  std::ifstream statm("/proc/self/statm");
-  long pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+  return cvt::ResidentMemory() / (1024.0 * 1024.0);
 }
 
 #if defined(__SANITIZE_ADDRESS__)
