@@ -176,6 +176,25 @@ double vtkCVTOpenGLContext::GetAvailableMemory() const
 }
 
 //------------------------------------------------------------------------------
+std::string vtkCVTOpenGLContext::CheckTextures(int width, int height, double gpuBytesPerPixel,
+  double softwareBytesPerPixel, const std::string& what, const std::string& advice) const
+{
+  const std::string size = std::to_string(width) + " x " + std::to_string(height) + " pixels";
+  const int largest = this->MaximumTextureSize;
+  if (width > largest || height > largest)
+  {
+    return what + " of " + size + " exceeds this GPU's largest texture (" +
+      std::to_string(largest) + " x " + std::to_string(largest) + "); " + advice;
+  }
+  const double pixels = static_cast<double>(width) * height;
+  return cvt::CheckMemory(
+    pixels * (this->SoftwareRenderer ? softwareBytesPerPixel : gpuBytesPerPixel),
+    this->GetAvailableMemory(), what + " of " + size,
+    this->SoftwareRenderer ? "memory (software OpenGL)" : "GPU memory",
+    advice + " or the CPU engine");
+}
+
+//------------------------------------------------------------------------------
 vtkOpenGLRenderWindow* vtkCVTOpenGLContext::GetRenderWindow() const
 {
   return this->Window;

@@ -49,6 +49,14 @@ public:
    * (NVIDIA's GL_NVX_gpu_memory_info), the system's available memory for software renderers.
    */
   double GetAvailableMemory() const;
+  /**
+   * "" or why textures of width x height pixels do not fit this context: a side beyond the
+   * largest texture, or more memory than is free at `gpuBytesPerPixel` on a GPU and
+   * `softwareBytesPerPixel` on a software renderer (its textures and its own copies, in system
+   * memory). `what` names them ("the grid"), `advice` says what to do ("use a coarser image").
+   */
+  std::string CheckTextures(int width, int height, double gpuBytesPerPixel,
+    double softwareBytesPerPixel, const std::string& what, const std::string& advice) const;
 
 protected:
   vtkCVTOpenGLContext();

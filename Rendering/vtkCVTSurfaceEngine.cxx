@@ -1,5 +1,4 @@
 #include "vtkCVTSurfaceEngine.h"
-#include "cvtMemory.h"
 
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
@@ -26,7 +25,6 @@
 #include <chrono>
 #include <climits>
 #include <cmath>
-#include <sstream>
 
 vtkStandardNewMacro(vtkCVTSurfaceEngine);
 
@@ -141,30 +139,15 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
   {
     return this->Fail(this->Context->GetLastError());
   }
-  const int maximumSize = this->Context->GetMaximumTextureSize();
-  if (image.Width > maximumSize || image.Height > maximumSize)
-  {
-    std::ostringstream msg;
-    msg << "the geometry image of " << image.Width << " x " << image.Height
-        << " pixels exceeds this GPU's largest texture (" << maximumSize << " x " << maximumSize
-        << "); use a smaller one";
-    return this->Fail(msg.str());
-  }
   // Textures per pixel: positions, two seed buffers and nearest points (16 bytes each), area
-  // weight, nearest corner and depth (4 each); a software renderer keeps them in system memory
-  // with its own copies (measured with llvmpipe).
-  const double bytesPerPixel = this->Context->IsSoftwareRenderer() ? 150.0 : 76.0;
-  const bool software = this->Context->IsSoftwareRenderer();
-  const std::string memory =
-    cvt::CheckMemory(static_cast<double>(image.NumberOfPixels()) * bytesPerPixel,
-      this->Context->GetAvailableMemory(),
-      "the OpenGL engine's geometry image of " + std::to_string(image.Width) + " x " +
-        std::to_string(image.Height) + " pixels",
-      software ? "memory (software OpenGL)" : "GPU memory",
-      "use a smaller geometry image or the CPU engine");
-  if (!memory.empty())
+  // weight, nearest corner and depth (4 each); on llvmpipe about 150 of the 227 bytes per pixel
+  // a whole `cvt surface --engine opengl` run took (1024x512 to 2048x1024; the rest is the
+  // geometry image's own arrays, checked by its source).
+  const std::string tooLarge = this->Context->CheckTextures(
+    image.Width, image.Height, 76.0, 150.0, "the geometry image", "use a smaller one");
+  if (!tooLarge.empty())
   {
-    return this->Fail(memory);
+    return this->Fail(tooLarge);
   }
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
