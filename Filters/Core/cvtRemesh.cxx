@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "cvtGeometry.h"
 #include "cvtPointCloud.h"
 
 namespace cvt
@@ -46,10 +47,8 @@ void UnitNormal(const double* p0, const double* p1, const double* p2, double n[3
 {
   const double u[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
   const double v[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
-  n[0] = u[1] * v[2] - u[2] * v[1];
-  n[1] = u[2] * v[0] - u[0] * v[2];
-  n[2] = u[0] * v[1] - u[1] * v[0];
-  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  Cross(u, v, n);
+  const double length = std::sqrt(Dot(n, n));
   for (int k = 0; k < 3; ++k)
   {
     n[k] = length > 0.0 ? n[k] / length : 0.0;
@@ -113,10 +112,8 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
         const std::array<int, 3> new1 = { a, d, c }, new2 = { d, b, c };
         UnitNormal(point(a), point(d), point(c), m1);
         UnitNormal(point(d), point(b), point(c), m2);
-        const auto dot = [](const double* u, const double* v)
-        { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
-        if (dot(n1, n2) < flatEnough || dot(m1, n1) < flatEnough || dot(m2, n2) < flatEnough ||
-          dot(m1, m2) < flatEnough)
+        if (Dot(n1, n2) < flatEnough || Dot(m1, n1) < flatEnough || Dot(m2, n2) < flatEnough ||
+          Dot(m1, m2) < flatEnough)
         {
           continue;
         }
@@ -141,68 +138,6 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
   return flips;
 }
 
-/// The point of triangle (a, b, c) nearest to p, with its barycentric coordinates (Ericson,
-/// Real-Time Collision Detection, 5.1.5).
-void ClosestPointOnTriangle(
-  const double* p, const double* a, const double* b, const double* c, double out[3], double w[3])
-{
-  double ab[3], ac[3], ap[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    ab[k] = b[k] - a[k];
-    ac[k] = c[k] - a[k];
-    ap[k] = p[k] - a[k];
-  }
-  const auto dot = [](const double* u, const double* v)
-  { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
-  const auto set = [&](double u, double v, double x)
-  {
-    w[0] = u;
-    w[1] = v;
-    w[2] = x;
-    for (int k = 0; k < 3; ++k)
-    {
-      out[k] = u * a[k] + v * b[k] + x * c[k];
-    }
-  };
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0)
-    return set(1, 0, 0);
-  double bp[3], cp[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    bp[k] = p[k] - b[k];
-    cp[k] = p[k] - c[k];
-  }
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3)
-    return set(0, 1, 0);
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0)
-  {
-    const double v = d1 / (d1 - d3);
-    return set(1 - v, v, 0);
-  }
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6)
-    return set(0, 0, 1);
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0)
-  {
-    const double x = d2 / (d2 - d6);
-    return set(1 - x, 0, x);
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-  {
-    const double x = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return set(0, 1 - x, x);
-  }
-  const double denominator = 1.0 / (va + vb + vc);
-  const double v = vb * denominator, x = vc * denominator;
-  set(1 - v - x, v, x);
-}
-
 /// Moves free (not pinned) vertices of triangles with a corner under 30 degrees to the mean of
 /// their neighbours, projected onto the input surface, wherever that raises the smallest angle
 /// around them without turning a triangle over: cells cut by a crease leave a few thin
@@ -218,6 +153,48 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
     {
       around[static_cast<size_t>(v)].push_back(t);
     }
+  }
+  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
+  const auto smallestAround = [&](int v, const double* at, double& smallest)
+  {
+    // The smallest angle of v's triangles with v at `at`; false if one turns over.
+    smallest = 10.0;
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+      const double* p[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = tri[k] == v ? at : point(tri[k]);
+      }
+      double before[3], after[3], angle[3];
+      UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), before);
+      UnitNormal(p[0], p[1], p[2], after);
+      if (Dot(before, after) < 0.7)
+      {
+        return false;
+      }
+      CornerAngles(p[0], p[1], p[2], angle);
+      smallest = std::min(smallest, *std::min_element(angle, angle + 3));
+    }
+    return true;
+  };
+  // A free vertex with a corner under `thin` at its current place (`current`: that corner).
+  const auto isThin = [&](int v, double& current)
+  {
+    return !pinned[static_cast<size_t>(v)] && !around[static_cast<size_t>(v)].empty() &&
+      smallestAround(v, point(v), current) && current < thin;
+  };
+  // Most remeshes have none: look before building the input's k-d tree.
+  bool any = false;
+  for (int v = 0; v < vertices && !any; ++v)
+  {
+    double current = 0.0;
+    any = isThin(v, current);
+  }
+  if (!any)
+  {
+    return 0;
   }
   // The input's triangle centroids in a k-d tree: the projection looks at the nearest few.
   std::vector<double> centroids(3 * static_cast<size_t>(surface.NumberOfTriangles()));
@@ -250,9 +227,7 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
       double candidate[3], weights[3];
       ClosestPointOnTriangle(
         p, surface.Point(tri[0]), surface.Point(tri[1]), surface.Point(tri[2]), candidate, weights);
-      const double d = (candidate[0] - p[0]) * (candidate[0] - p[0]) +
-        (candidate[1] - p[1]) * (candidate[1] - p[1]) +
-        (candidate[2] - p[2]) * (candidate[2] - p[2]);
+      const double d = Distance2(candidate, p);
       if (d < bestDistance)
       {
         bestDistance = d;
@@ -263,7 +238,6 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
     }
     return best;
   };
-  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
   // How far the centroids of v's triangles are from the input, with v at `at`: a move must
   // not cut across a crease (the input would then lie far from the remesh).
   const auto farthestCentroid = [&](int v, const double* at)
@@ -281,36 +255,10 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
       }
       if (nearestOnSurface(c, q, w) >= 0)
       {
-        farthest = std::max(farthest,
-          std::sqrt((q[0] - c[0]) * (q[0] - c[0]) + (q[1] - c[1]) * (q[1] - c[1]) +
-            (q[2] - c[2]) * (q[2] - c[2])));
+        farthest = std::max(farthest, std::sqrt(Distance2(q, c)));
       }
     }
     return farthest;
-  };
-  const auto smallestAround = [&](int v, const double* at, double& smallest)
-  {
-    // The smallest angle of v's triangles with v at `at`; false if one turns over.
-    smallest = 10.0;
-    for (int t : around[static_cast<size_t>(v)])
-    {
-      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
-      const double* p[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        p[k] = tri[k] == v ? at : point(tri[k]);
-      }
-      double before[3], after[3], angle[3];
-      UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), before);
-      UnitNormal(p[0], p[1], p[2], after);
-      if (before[0] * after[0] + before[1] * after[1] + before[2] * after[2] < 0.7)
-      {
-        return false;
-      }
-      CornerAngles(p[0], p[1], p[2], angle);
-      smallest = std::min(smallest, *std::min_element(angle, angle + 3));
-    }
-    return true;
   };
   int moved = 0;
   for (int round = 0; round < 3; ++round)
@@ -319,8 +267,7 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
     for (int v = 0; v < vertices; ++v)
     {
       double current = 0.0;
-      if (pinned[static_cast<size_t>(v)] || around[static_cast<size_t>(v)].empty() ||
-        !smallestAround(v, point(v), current) || current >= thin)
+      if (!isThin(v, current))
       {
         continue;
       }

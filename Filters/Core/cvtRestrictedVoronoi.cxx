@@ -1,6 +1,7 @@
 #include "cvtRestrictedVoronoi.h"
 
 #include "cvtEdgeTable.h"
+#include "cvtGeometry.h"
 #include "cvtPointCloud.h"
 #include "cvtThreads.h"
 
@@ -18,23 +19,6 @@ namespace cvt
 
 namespace
 {
-// ---- Small 3D vector helpers (the clipping works in double precision throughout).
-inline double Dot(const double* a, const double* b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline double Distance2(const double* a, const double* b)
-{
-  const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-  return Dot(d, d);
-}
-inline void Cross(const double* a, const double* b, double* out)
-{
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /// A vertex of a clipped triangle. Label names the edge to the next vertex: -1 - e for edge e
 /// of the mesh triangle (from local vertex e to e + 1), j >= 0 for the bisector with site j.
 /// Origin is the local mesh vertex it is (0..2), or -1 for a computed point.

@@ -1,5 +1,6 @@
 #include "cvtSurface.h"
 
+#include "cvtGeometry.h"
 #include "cvtPointCloud.h"
 #include "cvtSampling.h"
 
@@ -38,44 +39,10 @@ Vec3 Cross(const Vec3& a, const Vec3& b)
 {
   return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
 }
-Vec3 Along(const Vec3& a, const Vec3& d, double t)
-{
-  return { a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2] };
-}
 double Distance2(const Vec3& a, const Vec3& b)
 {
   const Vec3 d = Sub(a, b);
   return Dot(d, d);
-}
-
-/// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
-Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  const Vec3 ab = Sub(b, a), ac = Sub(c, a), ap = Sub(p, a);
-  const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
-  if (d1 <= 0.0 && d2 <= 0.0)
-    return a;
-  const Vec3 bp = Sub(p, b);
-  const double d3 = Dot(ab, bp), d4 = Dot(ac, bp);
-  if (d3 >= 0.0 && d4 <= d3)
-    return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-    return Along(a, ab, d1 / (d1 - d3));
-  const Vec3 cp = Sub(p, c);
-  const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
-  if (d6 >= 0.0 && d5 <= d6)
-    return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-    return Along(a, ac, d2 / (d2 - d6));
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-    return Along(b, Sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6)));
-  const double denominator = 1.0 / (va + vb + vc);
-  const double v = vb * denominator, w = vc * denominator;
-  return { a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w,
-    a[2] + ab[2] * v + ac[2] * w };
 }
 
 /// The four pixels of the quad whose lower-left corner is (i, j), counter-clockwise in (u, v);
@@ -259,7 +226,9 @@ void NearestPointsInCells(const GeometryImage& image, const std::vector<int>& la
       {
         const Vec3 a = At(image.Position, quad[t[0]]), b = At(image.Position, quad[t[1]]),
                    c = At(image.Position, quad[t[2]]);
-        const Vec3 q = ClosestPointOnTriangle(target, a, b, c);
+        Vec3 q, weights;
+        ClosestPointOnTriangle(
+          target.data(), a.data(), b.data(), c.data(), q.data(), weights.data());
         const double d2 = Distance2(q, target);
         if (d2 < best[label])
         {

@@ -200,7 +200,7 @@ TEST(Fuzz, SitesCsv)
 
 namespace
 {
-// A closed octahedron refined once: a small valid mesh to mutate.
+// A closed octahedron: a small valid mesh to mutate.
 cvt::SurfaceMesh Octahedron()
 {
   cvt::SurfaceMesh mesh;
