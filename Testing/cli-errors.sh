@@ -27,6 +27,7 @@ expect_error "no sites" image --resolution 16 --initial-sites "$T/empty.csv"
 expect_error "no such file" image --input "$T/missing.png"
 expect_error "unknown option" image --frobnicate
 expect_error "expects a number" image --tolerance abc
+expect_error "out of range" image --resolution 16 --sites 4294967297 # would wrap to 1 site
 expect_error "XMIN < XMAX" image --domain 1 -1 0 1
 expect_error "lloyd or lbfgs" image --method newton
 expect_error "between 1 and 100" image --corrections 0
