@@ -352,6 +352,7 @@ bool vtkCVTRemeshFilter::Compute(
   cvtvtk::AddFieldValue(remeshFields, "FilledHoles", remesh.FilledHoles);
   cvtvtk::AddFieldValue(remeshFields, "SplitVertices", remesh.SplitVertices);
   cvtvtk::AddFieldValue(remeshFields, "FlippedEdges", remesh.FlippedEdges);
+  cvtvtk::AddFieldValue(remeshFields, "ValenceFlips", remesh.ValenceFlips);
   cvtvtk::AddFieldValue(remeshFields, "MovedVertices", remesh.MovedVertices);
   const cvt::MeshTopology remeshTopology =
     cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);

@@ -55,15 +55,23 @@ void UnitNormal(const double* p0, const double* p1, const double* p2, double n[3
   }
 }
 
-/// Flips the shared edge of two nearly coplanar triangles wherever that raises the smaller of
-/// their smallest angles: restricted Delaunay triangles of cells cut by a border or a crease
-/// can be thin where the other diagonal of the same four vertices is not. Edges between two
-/// pinned vertices (border and crease lines) stay. Returns the number of flips.
-int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>& pinned,
-  std::vector<std::array<int, 3>>& triangles)
+/// One candidate flip: the shared edge (a, b) of two triangles becomes (c, d).
+struct EdgeFlip
 {
-  // Coplanar enough that the flip does not cut through the surface: 15 degrees.
-  const double flatEnough = std::cos(15.0 * 3.14159265358979323846 / 180.0);
+  int A, B, C, D;
+  double SmallestBefore; // the pair's smallest angle (radians) now
+  double SmallestAfter;  // and once flipped
+};
+
+/// Flips shared edges of two triangles within `flatDegrees` of coplanar wherever `accept(flip,
+/// valence)` says so, in passes until none is taken; `valence` counts each vertex's edges and is
+/// kept up to date. Edges between two pinned vertices (border and crease lines) stay, and a
+/// flip never makes an edge twice. Returns the number of flips.
+template<class Accept>
+int FlipEdges(const std::vector<double>& points, const std::vector<char>& pinned,
+  std::vector<std::array<int, 3>>& triangles, double flatDegrees, const Accept& accept)
+{
+  const double flatEnough = std::cos(flatDegrees * 3.14159265358979323846 / 180.0);
   const auto point = [&points](int v) { return &points[3 * static_cast<size_t>(v)]; };
   const auto smallestAngle = [&point](const std::array<int, 3>& t)
   {
@@ -71,6 +79,15 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
     CornerAngles(point(t[0]), point(t[1]), point(t[2]), angle);
     return *std::min_element(angle, angle + 3);
   };
+  std::vector<int> valence(pinned.size(), 0);
+  for (const auto& t : triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      // Each interior edge is seen from both sides; a border edge once, so count it whole.
+      valence[static_cast<size_t>(t[e])] += 1;
+    }
+  }
   int flips = 0;
   for (int pass = 0; pass < 4; ++pass)
   {
@@ -81,6 +98,19 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
       for (int e = 0; e < 3; ++e)
       {
         triangleOf[DirectedKey(triangles[t][e], triangles[t][(e + 1) % 3])] = t;
+      }
+    }
+    if (pass == 0)
+    {
+      // A vertex's valence: its triangles, plus one where it starts a border edge.
+      for (const auto& entry : triangleOf)
+      {
+        const int from = static_cast<int>(entry.first >> 32);
+        const int to = static_cast<int>(entry.first & 0xffffffffu);
+        if (!triangleOf.count(DirectedKey(to, from)))
+        {
+          ++valence[static_cast<size_t>(to)];
+        }
       }
     }
     std::vector<char> touched(triangles.size(), 0);
@@ -117,15 +147,20 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
         {
           continue;
         }
-        const double before = std::min(smallestAngle(triangles[t1]), smallestAngle(other));
-        const double after = std::min(smallestAngle(new1), smallestAngle(new2));
-        if (after <= before + 1e-9)
+        const EdgeFlip flip = { a, b, c, d,
+          std::min(smallestAngle(triangles[t1]), smallestAngle(other)),
+          std::min(smallestAngle(new1), smallestAngle(new2)) };
+        if (!accept(flip, valence))
         {
           continue;
         }
         triangles[t1] = new1;
         triangles[t2] = new2;
         touched[t1] = touched[t2] = 1;
+        --valence[static_cast<size_t>(a)];
+        --valence[static_cast<size_t>(b)];
+        ++valence[static_cast<size_t>(c)];
+        ++valence[static_cast<size_t>(d)];
         ++passFlips;
       }
     }
@@ -136,6 +171,62 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
     }
   }
   return flips;
+}
+
+/// Restricted Delaunay triangles of cells cut by a border or a crease can be thin where the
+/// other diagonal of the same four vertices is not: flips (within 15 degrees of coplanar) that
+/// raise the pair's smallest angle.
+int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>& pinned,
+  std::vector<std::array<int, 3>>& triangles)
+{
+  return FlipEdges(points, pinned, triangles, 15.0,
+    [](const EdgeFlip& flip, const std::vector<int>&)
+    { return flip.SmallestAfter > flip.SmallestBefore + 1e-9; });
+}
+
+/// Flips (within 10 degrees of coplanar) that bring the four vertices' valences closer to 6
+/// (4 on a border), as isotropic remeshers do, where the pair keeps every angle above 30
+/// degrees or gets no thinner: cells of a CVT that is not yet fully converged, and cells near
+/// creases, leave pairs of valence 5 and 7 vertices whose other diagonal is as good a triangle.
+int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<char>& pinned,
+  std::vector<std::array<int, 3>>& triangles)
+{
+  // Border vertices: ends of an edge with no twin (flips keep the border as it is).
+  std::unordered_map<std::uint64_t, char> directed;
+  for (const auto& t : triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      directed[DirectedKey(t[e], t[(e + 1) % 3])] = 1;
+    }
+  }
+  std::vector<char> onBorder(pinned.size(), 0);
+  for (const auto& t : triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      if (!directed.count(DirectedKey(t[(e + 1) % 3], t[e])))
+      {
+        onBorder[static_cast<size_t>(t[e])] = onBorder[static_cast<size_t>(t[(e + 1) % 3])] = 1;
+      }
+    }
+  }
+  const double wideEnough = 30.0 * 3.14159265358979323846 / 180.0;
+  const auto deviation = [&onBorder](int v, int valence)
+  {
+    const int d = valence - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
+    return d * d;
+  };
+  return FlipEdges(points, pinned, triangles, 10.0,
+    [&](const EdgeFlip& f, const std::vector<int>& valence)
+    {
+      const auto of = [&valence](int v) { return valence[static_cast<size_t>(v)]; };
+      const int before = deviation(f.A, of(f.A)) + deviation(f.B, of(f.B)) +
+        deviation(f.C, of(f.C)) + deviation(f.D, of(f.D));
+      const int after = deviation(f.A, of(f.A) - 1) + deviation(f.B, of(f.B) - 1) +
+        deviation(f.C, of(f.C) + 1) + deviation(f.D, of(f.D) + 1);
+      return after < before && f.SmallestAfter >= std::min(f.SmallestBefore, wideEnough);
+    });
 }
 
 /// Moves free (not pinned) vertices of triangles with a corner under 30 degrees to the mean of
@@ -313,6 +404,63 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
   }
   return moved;
 }
+
+/// Triangulates a small hole (a loop of at most a few dozen vertices, in the loop's
+/// orientation) so that its thinnest triangle is as wide as it can be: the classic dynamic
+/// programme over sub-polygons, O(n^3). `position(v)` gives vertex v's point; diagonals for
+/// which `isEdge(a, b)` holds (edges the mesh has already) are taken only where nothing else fits.
+template<class Position, class IsEdge>
+std::vector<std::array<int, 3>> TriangulateHole(
+  const std::vector<int>& loop, const Position& position, const IsEdge& isEdge)
+{
+  const int n = static_cast<int>(loop.size());
+  // best[i][j]: the largest smallest angle of a triangulation of loop[i..j]; split[i][j]: its apex.
+  std::vector<double> best(static_cast<size_t>(n * n), 10.0);
+  std::vector<int> split(static_cast<size_t>(n * n), -1);
+  const auto at = [n](int i, int j) { return static_cast<size_t>(i * n + j); };
+  for (int length = 2; length < n; ++length)
+  {
+    for (int i = 0; i + length < n; ++i)
+    {
+      const int j = i + length;
+      best[at(i, j)] = -1e300;
+      for (int k = i + 1; k < j; ++k)
+      {
+        double angle[3];
+        CornerAngles(position(loop[i]), position(loop[k]), position(loop[j]), angle);
+        const double here = std::min({ *std::min_element(angle, angle + 3),
+          k - i > 1 ? best[at(i, k)] : 10.0, j - k > 1 ? best[at(k, j)] : 10.0 });
+        if (here > best[at(i, j)])
+        {
+          best[at(i, j)] = here;
+          split[at(i, j)] = k;
+        }
+      }
+      if (j - i < n - 1 && isEdge(loop[i], loop[j]))
+      {
+        best[at(i, j)] -= 20.0;
+      }
+    }
+  }
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::pair<int, int>> pending = { { 0, n - 1 } };
+  while (!pending.empty())
+  {
+    const auto [i, j] = pending.back();
+    pending.pop_back();
+    const int k = split[at(i, j)];
+    triangles.push_back({ loop[i], loop[k], loop[j] });
+    if (k - i > 1)
+    {
+      pending.emplace_back(i, k);
+    }
+    if (j - k > 1)
+    {
+      pending.emplace_back(k, j);
+    }
+  }
+  return triangles;
+}
 }
 
 Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole,
@@ -395,6 +543,12 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       }
     }
   }
+  // Where each dual vertex will be: its border point when pinned, else its surface point.
+  const auto position = [&dual](int v)
+  {
+    const size_t i = static_cast<size_t>(v);
+    return dual.Pinned[i] ? &dual.BoundaryPoints[3 * i] : &dual.SurfacePoints[3 * i];
+  };
   std::vector<std::vector<int>> holes, borderLoops;
   for (auto& loop : TraceLoops(border))
   {
@@ -420,9 +574,11 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     {
       continue;
     }
-    for (size_t k = 1; k + 1 < loop.size(); ++k)
+    const auto isEdge = [&directed](int a, int b)
+    { return directed.count(DirectedKey(a, b)) || directed.count(DirectedKey(b, a)); };
+    for (const auto& t : TriangulateHole(loop, position, isEdge))
     {
-      kept.push_back({ loop[0], loop[k], loop[k + 1] });
+      kept.push_back(t);
     }
     ++remesh.FilledHoles;
   }
@@ -438,11 +594,6 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
         ++uses[v];
       }
     }
-    const auto position = [&dual](int v)
-    {
-      const size_t i = static_cast<size_t>(v);
-      return dual.Pinned[i] ? &dual.BoundaryPoints[3 * i] : &dual.SurfacePoints[3 * i];
-    };
     std::vector<std::array<int, 3>> shaped;
     shaped.reserve(kept.size());
     for (const auto& t : kept)
@@ -512,6 +663,7 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       pinned[v] = dual.Pinned[static_cast<size_t>(dualOf[v])];
     }
     remesh.FlippedEdges = FlipThinTriangles(remesh.Points, pinned, remesh.Triangles);
+    remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles);
     if (surface)
     {
       remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, *surface);

@@ -24,6 +24,7 @@ struct Remesh
   int FilledHoles = 0;                   // small holes closed (cells meeting in a degenerate point)
   int SplitVertices = 0;                 // pinched vertices given one copy per extra fan
   int FlippedEdges = 0;                  // diagonals flipped to widen thin triangles
+  int ValenceFlips = 0;                  // diagonals flipped to bring valences closer to 6
   int MovedVertices = 0;                 // free vertices of thin triangles moved along the surface
 };
 
@@ -31,10 +32,12 @@ struct Remesh
 /// points (boundary points for cells on the border), triangles the restricted Delaunay ones;
 /// triangles that would make an edge non-manifold are dropped, as are pairs on the same three
 /// sites, vertices where sheets meet are split, and holes of at most
-/// `maximumHole` edges are closed: those with a vertex off the input's border, and the shortest
-/// loops of border cells beyond the input's number of boundary loops. Given the input
-/// `surface`, free vertices of triangles with a corner under 30 degrees are then moved along
-/// it where that widens them.
+/// `maximumHole` edges are closed (by the triangulation whose thinnest triangle is widest):
+/// those with a vertex off the input's border, and the shortest loops of border cells beyond the
+/// input's number of boundary loops. Edges of nearly coplanar pairs are then flipped where that
+/// widens thin triangles, or brings valences closer to 6 without a corner under 30 degrees.
+/// Given the input `surface`, free vertices of triangles with a corner under 30 degrees are then
+/// moved along it where that widens them.
 CVTCORE_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 

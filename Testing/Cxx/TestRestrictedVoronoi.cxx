@@ -13,10 +13,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 #include <random>
+#include <set>
 
 namespace
 {
@@ -457,6 +459,145 @@ TEST(RestrictedVoronoi, RemeshFlipsThinTrianglesButNotFeatureEdges)
     EXPECT_NEAR(quality.MinimumAngle, pinned ? 11.31 : 22.62, 0.01);
     EXPECT_EQ(cvt::ComputeMeshTopology(4, remesh.Triangles).BoundaryLoops, 1);
   }
+}
+
+/// Each vertex's valence (its edges) in a triangle mesh.
+std::map<int, int> Valences(const std::vector<std::array<int, 3>>& triangles)
+{
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      edges.emplace(std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3]));
+    }
+  }
+  std::map<int, int> valence;
+  for (const auto& [a, b] : edges)
+  {
+    ++valence[a];
+    ++valence[b];
+  }
+  return valence;
+}
+
+TEST(RestrictedVoronoi, RemeshFlipsTowardsValenceSix)
+{
+  // A flat 5 x 5 grid of squares split along one diagonal: every interior vertex has valence 6.
+  // One square split the other way gives two vertices of valence 5 and two of 7, with the same
+  // 45-degree angles, so only the valence tells the diagonals apart: the remesh flips it back,
+  // unless the edge's two ends are pinned (a crease line).
+  for (bool pinned : { false, true })
+  {
+    std::vector<std::array<double, 3>> points;
+    for (int j = 0; j <= 5; ++j)
+    {
+      for (int i = 0; i <= 5; ++i)
+      {
+        points.push_back({ double(i), double(j), 0.0 });
+      }
+    }
+    const auto id = [](int i, int j) { return j * 6 + i; };
+    std::vector<char> pins(points.size(), 0);
+    pins[id(3, 2)] = pins[id(2, 3)] = pinned;
+    cvt::RestrictedDual dual = DualAt(points, false, pins);
+    for (int j = 0; j < 5; ++j)
+    {
+      for (int i = 0; i < 5; ++i)
+      {
+        const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+        if (i == 2 && j == 2)
+        {
+          dual.Triangles.push_back({ a, b, d }); // diagonal b-d: the odd one
+          dual.Triangles.push_back({ b, c, d });
+        }
+        else
+        {
+          dual.Triangles.push_back({ a, b, c }); // diagonal a-c
+          dual.Triangles.push_back({ a, c, d });
+        }
+      }
+    }
+    for (int i = 0; i <= 5; ++i) // the grid's border is the surface's border
+    {
+      for (int v : { id(i, 0), id(i, 5), id(0, i), id(5, i) })
+      {
+        dual.OnBoundary[v] = 1;
+      }
+    }
+    const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1);
+    EXPECT_EQ(remesh.ValenceFlips, pinned ? 0 : 1);
+    EXPECT_EQ(remesh.FlippedEdges, 0);
+    ASSERT_EQ(remesh.Triangles.size(), 50u);
+    std::map<int, int> interior; // valence -> count, at the 16 interior sites
+    const std::map<int, int> valence = Valences(remesh.Triangles);
+    for (const auto& [vertex, edges] : valence)
+    {
+      const int site = remesh.SiteIds[vertex];
+      if (!dual.OnBoundary[site])
+      {
+        ++interior[edges];
+      }
+    }
+    if (pinned)
+    {
+      EXPECT_EQ(interior, (std::map<int, int>{ { 5, 2 }, { 6, 12 }, { 7, 2 } }));
+    }
+    else
+    {
+      EXPECT_EQ(interior, (std::map<int, int>{ { 6, 16 } }));
+    }
+    EXPECT_NEAR(cvt::MeasureMesh(remesh.Points, remesh.Triangles).MinimumAngle, 45.0, 1e-9);
+  }
+}
+
+TEST(RestrictedVoronoi, RemeshFillsHolesWithTheWidestTriangles)
+{
+  // A ring between two long octagons: the inner one is a hole of eight edges, away from the
+  // input's border, which the remesh closes. Flat, a fan from any of its vertices has a corner
+  // of at most 10.1 degrees where the best triangulation has none under 41.2; bent as here, no
+  // flip can mend a fan (12.3 degrees) and the best has none under 38.2.
+  const std::vector<std::array<double, 2>> octagon = { { -3, 0 }, { -1.5, -0.7 }, { 0, -0.8 },
+    { 1.5, -0.7 }, { 3, 0 }, { 1.5, 0.7 }, { 0, 0.8 }, { -1.5, 0.7 } }; // counterclockwise
+  std::vector<std::array<double, 3>> points;
+  for (double scale : { 1.0, 2.0 })
+  {
+    for (const auto& p : octagon)
+    {
+      // Bent along its length, so that no flip between the fill's triangles is flat enough.
+      points.push_back({ scale * p[0], scale * p[1], 0.2 * scale * p[0] * scale * p[0] });
+    }
+  }
+  cvt::RestrictedDual dual = DualAt(points, false, {});
+  for (int k = 0; k < 8; ++k)
+  {
+    const int inner = k, next = (k + 1) % 8;
+    dual.Triangles.push_back({ inner, 8 + inner, 8 + next });
+    dual.Triangles.push_back({ inner, 8 + next, next });
+    dual.OnBoundary[8 + k] = 1; // the outer octagon is the input's border
+  }
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1);
+  EXPECT_EQ(remesh.FilledHoles, 1);
+  ASSERT_EQ(remesh.Triangles.size(), 16u + 6u);
+  const cvt::MeshTopology topology =
+    cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  EXPECT_EQ(topology.BoundaryLoops, 1);
+  EXPECT_EQ(topology.EulerCharacteristic, 1);
+  // The fill's triangles: all three vertices on the inner octagon.
+  double smallest = 180.0;
+  for (const auto& t : remesh.Triangles)
+  {
+    if (remesh.SiteIds[t[0]] < 8 && remesh.SiteIds[t[1]] < 8 && remesh.SiteIds[t[2]] < 8)
+    {
+      std::vector<double> corners;
+      for (int v : t)
+      {
+        corners.insert(corners.end(), &remesh.Points[3 * v], &remesh.Points[3 * v] + 3);
+      }
+      smallest = std::min(smallest, cvt::MeasureMesh(corners, { { 0, 1, 2 } }).MinimumAngle);
+    }
+  }
+  EXPECT_GT(smallest, 38.0);
 }
 
 TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
