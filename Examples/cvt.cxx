@@ -319,7 +319,7 @@ void Write(vtkDataObject* data, OutputFiles& files, const std::string& name)
   // so VTK and ParaView there could not read the files back.
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToNone(); // zlib took longer than the whole remesh of small meshes
-  writer->SetHeaderTypeToUInt64(); // 32-bit block headers fail past 4 GB (32768^2 labels)
+  writer->SetHeaderTypeToUInt64();   // 32-bit block headers fail past 4 GB (32768^2 labels)
   writer->SetInputData(data);
   writer->SetFileName(files.Add(name).c_str());
   if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError)
@@ -644,12 +644,7 @@ int RunRemesh(const Options& options)
   vtkNew<vtkCVTRemeshFilter> cvt;
   cvt->SetInputConnection(reader->GetOutputPort());
   cvt->SetDensityArray(options.Array.c_str());
-  const int iterations = cvt->GetMaximumNumberOfIterations();
   SetOptimizer(options, cvt.Get());
-  if (!options.HaveIterations)
-  {
-    cvt->SetMaximumNumberOfIterations(iterations); // the filter's default suits meshes
-  }
   const Clock::time_point optimise = Clock::now();
   Run(cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetSitesOutput(); });
   const double cvtSeconds = seconds(optimise);
@@ -697,8 +692,9 @@ int RunRemesh(const Options& options)
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
               << Field(remesh, "SplitVertices") << " pinched vertices split, "
-              << Field(remesh, "FlippedEdges") << " edges flipped, "
-              << Field(remesh, "MovedVertices") << " vertices moved)\n"
+              << Field(remesh, "FlippedEdges") << " edges flipped for angles, "
+              << Field(remesh, "ValenceFlips") << " for valence, " << Field(remesh, "MovedVertices")
+              << " vertices moved)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "

@@ -27,7 +27,6 @@ struct Options
   int GIResolution[2] = { 1024, 512 };
   bool HaveTorus = false, HaveImageOption = false;
   std::string Engine = "auto";
-  bool HaveIterations = false;
   long long Seed = 1;
   double Tolerance = 1e-6;
 };

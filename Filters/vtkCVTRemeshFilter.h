@@ -113,7 +113,7 @@ protected:
   bool FailPipelineOnError = true;
   vtkTimeStamp LastFailure; // when the last failed run ended (see FailPipelineOnError)
   bool LastRunFailed = false;
-  int MaximumNumberOfIterations = 60;
+  int MaximumNumberOfIterations = 100;
   double Tolerance = 1e-7;
   double GradientTolerance = 0.0;
   int NumberOfCorrections = 7;
