@@ -169,6 +169,8 @@ int vtkCVTImageFilter::RequestInformation(
   if (inInfo->Has(SDDP::WHOLE_EXTENT()))
   {
     labelsInfo->Set(SDDP::WHOLE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
+    // Under MPI each rank keeps its piece of the labels: the executive splits the extent.
+    labelsInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   }
   if (inInfo->Has(vtkDataObject::SPACING()))
   {
@@ -183,16 +185,12 @@ int vtkCVTImageFilter::RequestInformation(
 
 //------------------------------------------------------------------------------
 int vtkCVTImageFilter::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // The whole domain takes part in every cell, so always ask for all of it.
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  cvtvtk::RequestWholeExtent(inputVector[0]->GetInformationObject(0));
-  if (vtkInformation* sitesInfo = inputVector[1]->GetInformationObject(0))
-  {
-    sitesInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
-    sitesInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
-  }
+  // The whole domain takes part in every cell, and every initial site counts.
+  cvtvtk::RequestAllOfInput(inputVector[0]->GetInformationObject(0));
+  cvtvtk::RequestAllOfInput(inputVector[1]->GetInformationObject(0));
+  cvtvtk::ShareRequestedPiece(request, outputVector);
   return 1;
 }
 

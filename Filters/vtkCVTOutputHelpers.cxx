@@ -8,10 +8,14 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkExtentTranslator.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -26,6 +30,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace cvtvtk
 {
@@ -106,13 +111,135 @@ void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality)
   }
 }
 
-void RequestWholeExtent(vtkInformation* inputInformation)
+void ShareRequestedPiece(vtkInformation* request, vtkInformationVector* outputs)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int from = request->Has(vtkExecutive::FROM_OUTPUT_PORT())
+    ? request->Get(vtkExecutive::FROM_OUTPUT_PORT())
+    : 0;
+  vtkInformation* asked = outputs->GetInformationObject(std::max(from, 0));
+  if (!asked || !asked->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) ||
+    !asked->Has(SDDP::UPDATE_PIECE_NUMBER()))
+  {
+    return;
+  }
+  const int piece = asked->Get(SDDP::UPDATE_PIECE_NUMBER());
+  const int pieces = asked->Get(SDDP::UPDATE_NUMBER_OF_PIECES());
+  for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
+  {
+    vtkInformation* info = outputs->GetInformationObject(port);
+    if (info == asked)
+    {
+      continue;
+    }
+    info->Set(SDDP::UPDATE_PIECE_NUMBER(), piece);
+    info->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), pieces);
+    info->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    if (info->Has(SDDP::WHOLE_EXTENT()))
+    {
+      // The whole extent with the piece: the executive splits it (CAN_PRODUCE_SUB_EXTENT) as it
+      // does when that port is asked for the piece.
+      info->Set(SDDP::UPDATE_EXTENT(), info->Get(SDDP::WHOLE_EXTENT()), 6);
+    }
+  }
+}
+
+void RequestAllOfInput(vtkInformation* inputInformation)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (!inputInformation)
+  {
+    return;
+  }
   if (inputInformation->Has(SDDP::WHOLE_EXTENT()))
   {
     inputInformation->Set(SDDP::UPDATE_EXTENT(), inputInformation->Get(SDDP::WHOLE_EXTENT()), 6);
     inputInformation->Set(SDDP::EXACT_EXTENT(), 1);
+  }
+  inputInformation->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
+  inputInformation->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
+}
+
+namespace
+{
+/// Keeps cells [first, last) of `data` and the points they use (in their first use's order),
+/// with their point and cell data; field data stays.
+void KeepCells(vtkPolyData* data, vtkIdType first, vtkIdType last)
+{
+  vtkNew<vtkPolyData> kept;
+  vtkNew<vtkPoints> points;
+  points->SetDataType(data->GetPoints() ? data->GetPoints()->GetDataType() : VTK_FLOAT);
+  kept->SetPoints(points);
+  kept->GetPointData()->CopyAllocate(data->GetPointData());
+  kept->GetCellData()->CopyAllocate(data->GetCellData());
+  kept->AllocateEstimate(last - first, 3);
+  std::vector<vtkIdType> newId(static_cast<size_t>(data->GetNumberOfPoints()), -1);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = first; c < last; ++c)
+  {
+    data->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      vtkIdType& id = newId[static_cast<size_t>(ids->GetId(k))];
+      if (id < 0)
+      {
+        id = points->InsertNextPoint(data->GetPoint(ids->GetId(k)));
+        kept->GetPointData()->CopyData(data->GetPointData(), ids->GetId(k), id);
+      }
+      ids->SetId(k, id);
+    }
+    const vtkIdType cell = kept->InsertNextCell(data->GetCellType(c), ids);
+    kept->GetCellData()->CopyData(data->GetCellData(), c, cell);
+  }
+  kept->GetFieldData()->ShallowCopy(data->GetFieldData());
+  data->ShallowCopy(kept);
+}
+}
+
+void KeepRequestedPieces(vtkInformationVector* outputs)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
+  {
+    vtkInformation* info = outputs->GetInformationObject(port);
+    const int pieces =
+      info->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) ? info->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) : 1;
+    const int piece =
+      info->Has(SDDP::UPDATE_PIECE_NUMBER()) ? info->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+    if (pieces <= 1 || piece < 0 || piece >= pieces)
+    {
+      continue;
+    }
+    vtkDataObject* output = vtkDataObject::GetData(outputs, port);
+    if (auto* mesh = vtkPolyData::SafeDownCast(output))
+    {
+      const vtkIdType cells = mesh->GetNumberOfCells();
+      if (cells == 0 && piece > 0)
+      {
+        mesh->Initialize(); // points without cells: all on piece 0
+      }
+      else if (cells > 0)
+      {
+        KeepCells(mesh, cells * piece / pieces, cells * (piece + 1) / pieces);
+      }
+    }
+    else if (auto* image = vtkImageData::SafeDownCast(output))
+    {
+      // The executive asks each rank for its piece's extent (one shared layer between pieces).
+      int extent[6];
+      if (info->Has(SDDP::UPDATE_EXTENT()))
+      {
+        info->Get(SDDP::UPDATE_EXTENT(), extent);
+        image->Crop(extent);
+      }
+    }
+    else if (auto* table = vtkTable::SafeDownCast(output))
+    {
+      if (piece > 0)
+      {
+        table->Initialize();
+      }
+    }
   }
 }
 
@@ -213,6 +340,7 @@ int FinishRequest(vtkInformationVector* outputs, bool succeeded, bool failPipeli
 {
   if (succeeded)
   {
+    KeepRequestedPieces(outputs);
     return 1;
   }
   for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)

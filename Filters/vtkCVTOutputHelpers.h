@@ -47,8 +47,21 @@ vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values);
 /// ValenceHistogram and AngleHistogram arrays.
 void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality);
 
-/// Asks the upstream image for its whole extent: every pixel takes part in every cell.
-void RequestWholeExtent(vtkInformation* inputInformation);
+/// Asks upstream for all of its data: the whole extent of an image, the one piece of a mesh.
+/// Every pixel or triangle takes part in every cell, so under MPI each rank reads it all.
+void RequestAllOfInput(vtkInformation* inputInformation);
+
+/// In RequestUpdateExtent: gives every output port the piece the request's port asks for (under
+/// MPI, rank r of N asks one port for piece r of N; the others would get the whole outputs and
+/// run the filter again when they are asked in turn).
+void ShareRequestedPiece(vtkInformation* request, vtkInformationVector* outputs);
+
+/// Under MPI (ParaView's pvbatch or pvserver with N ranks) every rank computes the same CVT and
+/// keeps its share of each output, so that every site, triangle and history row appears once
+/// in the whole: piece p of N keeps the p-th N-th of a polydata's cells (with the points they
+/// use), an image is cropped to the piece's update extent, and only piece 0 keeps the history.
+/// Nothing changes when a single piece is asked for.
+void KeepRequestedPieces(vtkInformationVector* outputs);
 
 /// Whether the algorithm or one upstream of it was modified after `time`.
 bool ChangedSince(vtkAlgorithm* self, const vtkTimeStamp& time);

@@ -12,6 +12,7 @@
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -120,6 +121,16 @@ vtkTable* vtkCVTRemeshFilter::GetHistoryOutput()
 int vtkCVTRemeshFilter::FillOutputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkDataObject::DATA_TYPE_NAME(), port == HistoryPort ? "vtkTable" : "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTRemeshFilter::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The whole surface takes part in every cell: under MPI every rank reads all of it.
+  cvtvtk::RequestAllOfInput(inputVector[0]->GetInformationObject(0));
+  cvtvtk::ShareRequestedPiece(request, outputVector);
   return 1;
 }
 

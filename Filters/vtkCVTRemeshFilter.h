@@ -103,6 +103,7 @@ protected:
   ~vtkCVTRemeshFilter() override = default;
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /** RequestData's work: false after an error (reported with vtkErrorMacro). */
   bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);

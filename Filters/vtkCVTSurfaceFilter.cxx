@@ -104,15 +104,18 @@ int vtkCVTSurfaceFilter::RequestInformation(
   if (inInfo->Has(SDDP::WHOLE_EXTENT()))
   {
     labelsInfo->Set(SDDP::WHOLE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
+    // Under MPI each rank keeps its piece of the labels: the executive splits the extent.
+    labelsInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   }
   return 1;
 }
 
 //------------------------------------------------------------------------------
 int vtkCVTSurfaceFilter::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  cvtvtk::RequestWholeExtent(inputVector[0]->GetInformationObject(0));
+  cvtvtk::RequestAllOfInput(inputVector[0]->GetInformationObject(0));
+  cvtvtk::ShareRequestedPiece(request, outputVector);
   return 1;
 }
 

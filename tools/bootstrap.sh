@@ -13,7 +13,7 @@ packages=(
   build-essential cmake
   paraview-dev python3-paraview
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libqt5opengl5-dev
-  libx11-dev libglew-dev mpi-default-dev
+  libx11-dev libglew-dev mpi-default-dev openmpi-bin
   libhdf5-dev libnetcdf-dev libgdal-dev libavcodec-dev libavformat-dev libswscale-dev
   libavutil-dev libtheora-dev libogg-dev libtiff-dev libpng-dev libjpeg-dev liblz4-dev
   liblzma-dev libfreetype-dev libgl2ps-dev libdouble-conversion-dev libutfcpp-dev zlib1g-dev
