@@ -26,7 +26,6 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
@@ -163,23 +162,8 @@ int vtkCVTImageFilter::FillOutputPortInformation(int port, vtkInformation* info)
 int vtkCVTImageFilter::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkInformation* labelsInfo = outputVector->GetInformationObject(LabelsPort);
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
-  {
-    labelsInfo->Set(SDDP::WHOLE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
-    // Under MPI each rank keeps its piece of the labels: the executive splits the extent.
-    labelsInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
-  }
-  if (inInfo->Has(vtkDataObject::SPACING()))
-  {
-    labelsInfo->Set(vtkDataObject::SPACING(), inInfo->Get(vtkDataObject::SPACING()), 3);
-  }
-  if (inInfo->Has(vtkDataObject::ORIGIN()))
-  {
-    labelsInfo->Set(vtkDataObject::ORIGIN(), inInfo->Get(vtkDataObject::ORIGIN()), 3);
-  }
+  cvtvtk::DescribeLabelsLikeInput(
+    inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(LabelsPort));
   return 1;
 }
 

@@ -111,6 +111,27 @@ void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality)
   }
 }
 
+void DescribeLabelsLikeInput(vtkInformation* inputInformation, vtkInformation* labelsInformation)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (inputInformation->Has(SDDP::WHOLE_EXTENT()))
+  {
+    labelsInformation->Set(SDDP::WHOLE_EXTENT(), inputInformation->Get(SDDP::WHOLE_EXTENT()), 6);
+    // The executive then splits the extent into the pieces MPI ranks ask for.
+    labelsInformation->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+  }
+  if (inputInformation->Has(vtkDataObject::SPACING()))
+  {
+    labelsInformation->Set(
+      vtkDataObject::SPACING(), inputInformation->Get(vtkDataObject::SPACING()), 3);
+  }
+  if (inputInformation->Has(vtkDataObject::ORIGIN()))
+  {
+    labelsInformation->Set(
+      vtkDataObject::ORIGIN(), inputInformation->Get(vtkDataObject::ORIGIN()), 3);
+  }
+}
+
 void ShareRequestedPiece(vtkInformation* request, vtkInformationVector* outputs)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;

@@ -47,6 +47,10 @@ vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values);
 /// ValenceHistogram and AngleHistogram arrays.
 void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality);
 
+/// In RequestInformation: the labels image has the input image's whole extent, spacing and
+/// origin, and may be asked for a sub-extent (under MPI each rank keeps its piece of it).
+void DescribeLabelsLikeInput(vtkInformation* inputInformation, vtkInformation* labelsInformation);
+
 /// Asks upstream for all of its data: the whole extent of an image, the one piece of a mesh.
 /// Every pixel or triangle takes part in every cell, so under MPI each rank reads it all.
 void RequestAllOfInput(vtkInformation* inputInformation);

@@ -23,7 +23,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -98,15 +97,8 @@ int vtkCVTSurfaceFilter::FillOutputPortInformation(int port, vtkInformation* inf
 int vtkCVTSurfaceFilter::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkInformation* labelsInfo = outputVector->GetInformationObject(LabelsPort);
-  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
-  {
-    labelsInfo->Set(SDDP::WHOLE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
-    // Under MPI each rank keeps its piece of the labels: the executive splits the extent.
-    labelsInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
-  }
+  cvtvtk::DescribeLabelsLikeInput(
+    inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(LabelsPort));
   return 1;
 }
 

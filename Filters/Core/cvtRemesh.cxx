@@ -64,8 +64,9 @@ struct EdgeFlip
 };
 
 /// Flips shared edges of two triangles within `flatDegrees` of coplanar wherever `accept(flip,
-/// valence)` says so, in passes until none is taken; `valence` counts each vertex's edges and is
-/// kept up to date. Edges between two pinned vertices (border and crease lines) stay, and a
+/// valence, onBorder)` says so, in passes until none is taken; `valence` counts each vertex's
+/// edges and is kept up to date, `onBorder` marks the ends of edges with one triangle (flips do
+/// not change them). Edges between two pinned vertices (border and crease lines) stay, and a
 /// flip never makes an edge twice. Returns the number of flips.
 template<class Accept>
 int FlipEdges(const std::vector<double>& points, const std::vector<char>& pinned,
@@ -80,14 +81,7 @@ int FlipEdges(const std::vector<double>& points, const std::vector<char>& pinned
     return *std::min_element(angle, angle + 3);
   };
   std::vector<int> valence(pinned.size(), 0);
-  for (const auto& t : triangles)
-  {
-    for (int e = 0; e < 3; ++e)
-    {
-      // Each interior edge is seen from both sides; a border edge once, so count it whole.
-      valence[static_cast<size_t>(t[e])] += 1;
-    }
-  }
+  std::vector<char> onBorder(pinned.size(), 0);
   int flips = 0;
   for (int pass = 0; pass < 4; ++pass)
   {
@@ -102,14 +96,19 @@ int FlipEdges(const std::vector<double>& points, const std::vector<char>& pinned
     }
     if (pass == 0)
     {
-      // A vertex's valence: its triangles, plus one where it starts a border edge.
-      for (const auto& entry : triangleOf)
+      // A vertex's valence: one edge per triangle around it, and one more on a border (its
+      // fan is open there), where an edge has no twin.
+      for (const auto& t : triangles)
       {
-        const int from = static_cast<int>(entry.first >> 32);
-        const int to = static_cast<int>(entry.first & 0xffffffffu);
-        if (!triangleOf.count(DirectedKey(to, from)))
+        for (int e = 0; e < 3; ++e)
         {
-          ++valence[static_cast<size_t>(to)];
+          const int from = t[e], to = t[(e + 1) % 3];
+          ++valence[static_cast<size_t>(from)];
+          if (!triangleOf.count(DirectedKey(to, from)))
+          {
+            onBorder[static_cast<size_t>(from)] = onBorder[static_cast<size_t>(to)] = 1;
+            ++valence[static_cast<size_t>(to)];
+          }
         }
       }
     }
@@ -150,7 +149,7 @@ int FlipEdges(const std::vector<double>& points, const std::vector<char>& pinned
         const EdgeFlip flip = { a, b, c, d,
           std::min(smallestAngle(triangles[t1]), smallestAngle(other)),
           std::min(smallestAngle(new1), smallestAngle(new2)) };
-        if (!accept(flip, valence))
+        if (!accept(flip, valence, onBorder))
         {
           continue;
         }
@@ -180,7 +179,7 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
   std::vector<std::array<int, 3>>& triangles)
 {
   return FlipEdges(points, pinned, triangles, 15.0,
-    [](const EdgeFlip& flip, const std::vector<int>&)
+    [](const EdgeFlip& flip, const std::vector<int>&, const std::vector<char>&)
     { return flip.SmallestAfter > flip.SmallestBefore + 1e-9; });
 }
 
@@ -191,35 +190,15 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
 int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<char>& pinned,
   std::vector<std::array<int, 3>>& triangles)
 {
-  // Border vertices: ends of an edge with no twin (flips keep the border as it is).
-  std::unordered_map<std::uint64_t, char> directed;
-  for (const auto& t : triangles)
-  {
-    for (int e = 0; e < 3; ++e)
-    {
-      directed[DirectedKey(t[e], t[(e + 1) % 3])] = 1;
-    }
-  }
-  std::vector<char> onBorder(pinned.size(), 0);
-  for (const auto& t : triangles)
-  {
-    for (int e = 0; e < 3; ++e)
-    {
-      if (!directed.count(DirectedKey(t[(e + 1) % 3], t[e])))
-      {
-        onBorder[static_cast<size_t>(t[e])] = onBorder[static_cast<size_t>(t[(e + 1) % 3])] = 1;
-      }
-    }
-  }
   const double wideEnough = 30.0 * 3.14159265358979323846 / 180.0;
-  const auto deviation = [&onBorder](int v, int valence)
-  {
-    const int d = valence - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
-    return d * d;
-  };
   return FlipEdges(points, pinned, triangles, 10.0,
-    [&](const EdgeFlip& f, const std::vector<int>& valence)
+    [&](const EdgeFlip& f, const std::vector<int>& valence, const std::vector<char>& onBorder)
     {
+      const auto deviation = [&onBorder](int v, int edges)
+      {
+        const int d = edges - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
+        return d * d;
+      };
       const auto of = [&valence](int v) { return valence[static_cast<size_t>(v)]; };
       const int before = deviation(f.A, of(f.A)) + deviation(f.B, of(f.B)) +
         deviation(f.C, of(f.C)) + deviation(f.D, of(f.D));
@@ -568,14 +547,14 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
   {
     holes.push_back(borderLoops[extra]);
   }
+  const auto isEdge = [&directed](int a, int b)
+  { return directed.count(DirectedKey(a, b)) || directed.count(DirectedKey(b, a)); };
   for (const auto& loop : holes)
   {
     if (static_cast<int>(loop.size()) > maximumHole)
     {
       continue;
     }
-    const auto isEdge = [&directed](int a, int b)
-    { return directed.count(DirectedKey(a, b)) || directed.count(DirectedKey(b, a)); };
     for (const auto& t : TriangulateHole(loop, position, isEdge))
     {
       kept.push_back(t);

@@ -21,9 +21,22 @@ def check(what, ok):
         failures.append(what)
 
 
+def check_same(what, ours, alone):
+    check("%s: %d in all ranks' pieces (alone %d)" % (what, ours, alone), ours == alone)
+
+
 def counts(proxy, port):
     info = proxy.GetDataInformation(port)
     return info.GetNumberOfPoints(), info.GetNumberOfCells(), info.GetNumberOfRows()
+
+
+def run_alone(algorithm, source, sites):
+    """The filter on one process, as the reference: 10 iterations, like the proxies below."""
+    algorithm.SetInputConnection(source.GetOutputPort())
+    algorithm.SetNumberOfSites(sites)
+    algorithm.SetMaximumNumberOfIterations(10)
+    algorithm.Update()
+    return algorithm
 
 
 def site_ids(proxy):
@@ -45,13 +58,9 @@ def main(argv):
     source = vtkRTAnalyticSource()
     source.SetWholeExtent(*extent)
     alone = vtkCVTImageFilter()
-    alone.SetInputConnection(source.GetOutputPort())
     alone.SetInputArrayToProcess(0, 0, 0, 0, "RTData")
-    alone.SetNumberOfSites(300)
-    alone.SetMaximumNumberOfIterations(10)
-    alone.Update()
-    sites, _, _ = counts(image, 0)
-    check("image: %d sites in all ranks' pieces (alone: 300)" % sites, sites == 300)
+    run_alone(alone, source, 300)
+    check_same("image: sites", counts(image, 0)[0], 300)
     ids = site_ids(image)
     check("image: each site once (%d distinct ids of %d)" % (len(set(ids)), len(ids)),
           sorted(ids) == list(range(300)))
@@ -59,12 +68,9 @@ def main(argv):
     # Pieces of an image share one layer of points: 101 x 101 points, plus one shared row.
     check("image: labels in pieces (%d points; whole image 10201)" % labels,
           10201 <= labels <= 10201 + 101 * (ranks - 1))
-    _, triangles, _ = counts(image, 2)
-    reference = alone.GetDualOutput().GetNumberOfCells()
-    check("image: dual triangles %d (alone %d)" % (triangles, reference), triangles == reference)
-    _, _, rows = counts(image, 3)
-    reference = alone.GetHistoryOutput().GetNumberOfRows()
-    check("image: history rows %d (alone %d)" % (rows, reference), rows == reference)
+    check_same("image: dual triangles", counts(image, 2)[1],
+               alone.GetDualOutput().GetNumberOfCells())
+    check_same("image: history rows", counts(image, 3)[2], alone.GetHistoryOutput().GetNumberOfRows())
     energy = servermanager.Fetch(image).GetFieldData().GetArray("Energy").GetValue(0)
     reference = alone.GetSitesOutput().GetFieldData().GetArray("Energy").GetValue(0)
     check("image: energy %.9g (alone %.9g)" % (energy, reference),
@@ -77,21 +83,13 @@ def main(argv):
     sphere = vtkSphereSource()
     sphere.SetThetaResolution(40)
     sphere.SetPhiResolution(40)
-    alone = vtkCVTRemeshFilter()
-    alone.SetInputConnection(sphere.GetOutputPort())
-    alone.SetNumberOfSites(200)
-    alone.SetMaximumNumberOfIterations(10)
-    alone.Update()
-    sites, _, _ = counts(remesh, 0)
-    check("remesh: %d sites (alone 200)" % sites, sites == 200)
+    alone = run_alone(vtkCVTRemeshFilter(), sphere, 200)
+    check_same("remesh: sites", counts(remesh, 0)[0], 200)
     ids = site_ids(remesh)
     check("remesh: each site once", sorted(ids) == list(range(200)))
-    _, triangles, _ = counts(remesh, 2)
-    reference = alone.GetRemeshOutput().GetNumberOfCells()
-    check("remesh: %d triangles (alone %d)" % (triangles, reference), triangles == reference)
-    _, cells, _ = counts(remesh, 1)
-    reference = alone.GetLabelsOutput().GetNumberOfCells()
-    check("remesh: labelled input %d triangles (alone %d)" % (cells, reference), cells == reference)
+    check_same("remesh: triangles", counts(remesh, 2)[1], alone.GetRemeshOutput().GetNumberOfCells())
+    check_same("remesh: labelled input triangles", counts(remesh, 1)[1],
+               alone.GetLabelsOutput().GetNumberOfCells())
 
     print("parallel: %s" % ("ok" if not failures else "FAILED (%d)" % len(failures)))
 
