@@ -2,9 +2,8 @@
 
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
-#include "cvtLBFGS.h"
-#include "cvtLloyd.h"
 #include "cvtMemory.h"
+#include "cvtProblems.h"
 #include "cvtQuality.h"
 #include "cvtSampling.h"
 #include "vtkCVTEngineChoice.h"
@@ -362,14 +361,16 @@ bool vtkCVTImageFilter::Compute(
     this->UpdateProgress(fraction);
     return !this->GetAbortExecute();
   };
-  const bool ok = engine.SetDomain(grid, density) && engine.SetSites(sites);
+  const bool ok = engine.SetDomain(grid, density);
   if (choice.UseOpenGL)
   {
     this->ContextDescription = gpu->GetContextDescription();
   }
+  cvt::PlaneProblem problem(engine, grid);
+  const cvt::SiteState initial{ sites, {} };
   const bool optimized = ok &&
-    (this->Method == LLOYD ? cvt::RunLloyd(engine, options, progress, result, error)
-                           : cvt::RunLBFGS(engine, grid, sites, options, progress, result, error));
+    (this->Method == LLOYD ? cvt::RunLloyd(problem, initial, options, progress, result, error)
+                           : cvt::RunLBFGS(problem, initial, options, progress, result, error));
   const char* what = choice.UseOpenGL ? "The GPU CVT failed: " : "The CPU CVT failed: ";
   if (!optimized)
   {

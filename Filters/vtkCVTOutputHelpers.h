@@ -2,7 +2,7 @@
 #ifndef vtkCVTOutputHelpers_h
 #define vtkCVTOutputHelpers_h
 
-#include "cvtLloyd.h" // for HistoryEntry
+#include "cvtOptimizer.h" // for HistoryEntry
 
 #include <string>
 #include <vector>

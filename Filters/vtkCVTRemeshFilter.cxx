@@ -1,6 +1,6 @@
 #include "vtkCVTRemeshFilter.h"
 
-#include "cvtMeshOptimizer.h"
+#include "cvtProblems.h"
 #include "cvtQuality.h"
 #include "cvtRemesh.h"
 #include "cvtRestrictedVoronoi.h"
@@ -278,9 +278,11 @@ bool vtkCVTRemeshFilter::Compute(
     this->UpdateProgress(0.95 * fraction);
     return !this->GetAbortExecute();
   };
+  cvt::RestrictedProblem restricted(engine);
+  const cvt::SiteState start{ initial, {} };
   const bool optimized = meshSet &&
-    (this->Method == LLOYD ? cvt::RunMeshLloyd(engine, initial, options, progress, result, error)
-                           : cvt::RunMeshLBFGS(engine, initial, options, progress, result, error));
+    (this->Method == LLOYD ? cvt::RunLloyd(restricted, start, options, progress, result, error)
+                           : cvt::RunLBFGS(restricted, start, options, progress, result, error));
   if (!optimized)
   {
     vtkErrorMacro(

@@ -1,9 +1,9 @@
 #include "vtkCVTSurfaceFilter.h"
 
 #include "cvtParameterization.h"
+#include "cvtProblems.h"
 #include "cvtQuality.h"
 #include "cvtSurface.h"
-#include "cvtSurfaceOptimizer.h"
 #include "vtkCVTEngineChoice.h"
 #include "vtkCVTOutputHelpers.h"
 #include "vtkCVTRemeshFilter.h"
@@ -248,7 +248,7 @@ bool vtkCVTSurfaceFilter::Compute(
   options.Tolerance = this->Tolerance;
   options.GradientTolerance = this->GradientTolerance;
   options.NumberOfCorrections = this->NumberOfCorrections;
-  cvt::SurfaceResult result;
+  cvt::OptimizerResult result;
   std::string error;
   const auto progress = [this](double fraction)
   {
@@ -257,15 +257,18 @@ bool vtkCVTSurfaceFilter::Compute(
   };
   const bool ready = engine->SetGeometryImage(image);
   this->ContextDescription = engine->GetContextDescription();
+  cvt::GeometryImageProblem surface(*engine, image);
+  const cvt::SiteState initial{ sites, pixels };
+  std::vector<int> labels;
   const bool optimized = ready &&
-    (this->Method == LLOYD
-        ? cvt::RunSurfaceLloyd(*engine, image, sites, pixels, options, progress, result, error)
-        : cvt::RunSurfaceLBFGS(*engine, image, sites, pixels, options, progress, result, error));
+    (this->Method == LLOYD ? cvt::RunLloyd(surface, initial, options, progress, result, error)
+                           : cvt::RunLBFGS(surface, initial, options, progress, result, error)) &&
+    engine->GetLabels(labels);
   engine->ReleaseGraphicsResources();
   if (!optimized)
   {
-    vtkErrorMacro(
-      "The GPU surface CVT failed: " << (ready ? error : engine->GetLastError()) << ".");
+    vtkErrorMacro("The GPU surface CVT failed: "
+      << (ready && !error.empty() ? error : engine->GetLastError()) << ".");
     return false;
   }
   if (result.StopReason.rfind("no sufficient decrease", 0) == 0)
@@ -280,8 +283,7 @@ bool vtkCVTSurfaceFilter::Compute(
     cvtvtk::FillSites(sitesOut, result.Sites, 3, 0.0, result.Sums);
   vtkFieldData* fields = sitesOut->GetFieldData();
   cvtvtk::AddFieldValue(fields, "Energy", result.Sums.TotalEnergy());
-  cvtvtk::AddFieldValue(
-    fields, "GradientNorm", cvt::TangentialGradientNorm(image, result.Sums, result.Pixels));
+  cvtvtk::AddFieldValue(fields, "GradientNorm", surface.GradientNorm(result.Sums));
   cvtvtk::AddFieldValue(fields, "Iterations", result.Iterations);
   cvtvtk::AddFieldValue(fields, "Evaluations", result.Evaluations);
   cvtvtk::AddFieldValue(fields, "MinimumAreaWeight", minimumWeight);
@@ -292,10 +294,9 @@ bool vtkCVTSurfaceFilter::Compute(
   cvtvtk::AddFieldString(fields, "EngineReason", choice.Reason);
 
   labelsOut->ShallowCopy(input);
-  labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(result.Labels));
+  labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(labels));
 
-  const std::vector<std::array<int, 3>> dual =
-    cvt::DualTriangles(image, result.Labels, result.Sites);
+  const std::vector<std::array<int, 3>> dual = cvt::DualTriangles(image, labels, result.Sites);
   vtkNew<vtkCellArray> triangles;
   for (const auto& t : dual)
   {

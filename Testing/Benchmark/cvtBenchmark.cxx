@@ -26,12 +26,10 @@
 //        cvtBenchmark scaling [MAX_SIDE (4096)] [MAX_SITES (100000)]
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
-#include "cvtLBFGS.h"
-#include "cvtLloyd.h"
 #include "cvtMemory.h"
+#include "cvtProblems.h"
 #include "cvtQuality.h"
 #include "cvtSampling.h"
-#include "cvtSurfaceOptimizer.h"
 #include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTOpenGLEngine.h"
 #include "vtkCVTSurfaceEngine.h"
@@ -130,9 +128,11 @@ bool Optimize(cvt::Engine& engine, const cvt::Grid& grid, const std::vector<floa
   options.MaximumNumberOfIterations = iterations;
   std::string error;
   const auto start = Clock::now();
-  const bool ok = engine.SetDomain(grid, density) && engine.SetSites(sites) &&
-    (lbfgs ? cvt::RunLBFGS(engine, grid, sites, options, nullptr, run.Result, error)
-           : cvt::RunLloyd(engine, options, nullptr, run.Result, error));
+  cvt::PlaneProblem problem(engine, grid);
+  const cvt::SiteState initial{ sites, {} };
+  const bool ok = engine.SetDomain(grid, density) &&
+    (lbfgs ? cvt::RunLBFGS(problem, initial, options, nullptr, run.Result, error)
+           : cvt::RunLloyd(problem, initial, options, nullptr, run.Result, error));
   run.Seconds = SecondsSince(start);
   if (!ok)
   {
@@ -393,10 +393,11 @@ bool SurfaceTiming(int width, int height)
   }
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = 15;
-  cvt::SurfaceResult lloyd, lbfgs;
+  cvt::OptimizerResult lloyd, lbfgs;
   std::string error;
-  if (!cvt::RunSurfaceLloyd(*engine, image, sites, pixels, options, nullptr, lloyd, error) ||
-    !cvt::RunSurfaceLBFGS(*engine, image, sites, pixels, options, nullptr, lbfgs, error))
+  cvt::GeometryImageProblem problem(*engine, image);
+  if (!cvt::RunLloyd(problem, { sites, pixels }, options, nullptr, lloyd, error) ||
+    !cvt::RunLBFGS(problem, { sites, pixels }, options, nullptr, lbfgs, error))
   {
     std::fprintf(stderr, "optimiser failed: %s\n", error.c_str());
     return false;

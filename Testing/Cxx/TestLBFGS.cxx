@@ -1,8 +1,7 @@
 // L-BFGS through the engine seam: on the exact CPU engine and on the GPU engine.
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
-#include "cvtLBFGS.h"
-#include "cvtLloyd.h"
+#include "cvtProblems.h"
 #include "cvtQuality.h"
 #include "cvtSampling.h"
 #include "vtkCVTOpenGLEngine.h"
@@ -21,9 +20,10 @@ cvt::OptimizerResult Optimize(cvt::Engine& engine, const cvt::Grid& grid,
   std::string error;
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   EXPECT_TRUE(engine.SetDomain(grid, density)) << engine.GetLastError();
-  EXPECT_TRUE(engine.SetSites(sites)) << engine.GetLastError();
-  const bool ok = lbfgs ? cvt::RunLBFGS(engine, grid, sites, options, nullptr, result, error)
-                        : cvt::RunLloyd(engine, options, nullptr, result, error);
+  cvt::PlaneProblem problem(engine, grid);
+  const cvt::SiteState initial{ sites, {} };
+  const bool ok = lbfgs ? cvt::RunLBFGS(problem, initial, options, nullptr, result, error)
+                        : cvt::RunLloyd(problem, initial, options, nullptr, result, error);
   EXPECT_TRUE(ok) << error;
   return result;
 }
@@ -91,13 +91,15 @@ TEST(LBFGS, StopsOnGradientToleranceAndAbort)
   options.GradientTolerance = 0.01;
   cvt::OptimizerResult result;
   std::string error;
-  ASSERT_TRUE(cvt::RunLBFGS(engine, grid, sites, options, nullptr, result, error)) << error;
+  cvt::PlaneProblem problem(engine, grid);
+  const cvt::SiteState initial{ sites, {} };
+  ASSERT_TRUE(cvt::RunLBFGS(problem, initial, options, nullptr, result, error)) << error;
   EXPECT_EQ(result.StopReason, "gradient tolerance reached");
   EXPECT_LE(result.History.back().GradientNorm, 0.01 * result.History.front().GradientNorm);
 
   int calls = 0;
   ASSERT_TRUE(cvt::RunLBFGS(
-    engine, grid, sites, options, [&calls](double) { return ++calls < 3; }, result, error));
+    problem, initial, options, [&calls](double) { return ++calls < 3; }, result, error));
   EXPECT_TRUE(result.Aborted);
   EXPECT_EQ(result.StopReason, "aborted");
   EXPECT_EQ(result.Sites.size(), sites.size());

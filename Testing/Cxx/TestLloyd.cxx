@@ -1,7 +1,7 @@
 // Lloyd's method on the GPU engine: monotone energy, and GPU site updates equal to the
 // centroids of the reduced sums.
 #include "cvtExactVoronoi.h"
-#include "cvtLloyd.h"
+#include "cvtProblems.h"
 #include "cvtSampling.h"
 #include "vtkCVTOpenGLEngine.h"
 #include "vtkNew.h"
@@ -14,12 +14,13 @@ TEST(Lloyd, EnergyDecreasesEveryIteration)
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   ASSERT_TRUE(engine->SetDomain(grid, density));
-  ASSERT_TRUE(engine->SetSites(cvt::SampleSites(grid, {}, 100, 2)));
+  cvt::PlaneProblem problem(*engine, grid);
+  const cvt::SiteState initial{ cvt::SampleSites(grid, {}, 100, 2), {} };
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = 30;
   cvt::OptimizerResult result;
   std::string error;
-  ASSERT_TRUE(cvt::RunLloyd(*engine, options, nullptr, result, error)) << error;
+  ASSERT_TRUE(cvt::RunLloyd(problem, initial, options, nullptr, result, error)) << error;
   ASSERT_EQ(result.History.size(), 31u);
   for (size_t k = 1; k < result.History.size(); ++k)
   {
@@ -60,13 +61,14 @@ TEST(Lloyd, ToleranceStopsEarly)
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   ASSERT_TRUE(engine->SetDomain(grid, density));
-  ASSERT_TRUE(engine->SetSites(cvt::SampleSites(grid, {}, 10, 1)));
+  cvt::PlaneProblem problem(*engine, grid);
+  const cvt::SiteState initial{ cvt::SampleSites(grid, {}, 10, 1), {} };
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = 500;
   options.Tolerance = 1e-4;
   cvt::OptimizerResult result;
   std::string error;
-  ASSERT_TRUE(cvt::RunLloyd(*engine, options, nullptr, result, error)) << error;
+  ASSERT_TRUE(cvt::RunLloyd(problem, initial, options, nullptr, result, error)) << error;
   EXPECT_LT(result.Iterations, 500);
   EXPECT_NE(result.StopReason, "iteration limit");
 }
@@ -77,14 +79,15 @@ TEST(Lloyd, ProgressCallbackCanAbort)
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
   vtkNew<vtkCVTOpenGLEngine> engine;
   ASSERT_TRUE(engine->SetDomain(grid, density));
-  ASSERT_TRUE(engine->SetSites(cvt::SampleSites(grid, {}, 10, 1)));
+  cvt::PlaneProblem problem(*engine, grid);
+  const cvt::SiteState initial{ cvt::SampleSites(grid, {}, 10, 1), {} };
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = 100;
   cvt::OptimizerResult result;
   std::string error;
   int calls = 0;
   ASSERT_TRUE(cvt::RunLloyd(
-    *engine, options, [&calls](double) { return ++calls < 5; }, result, error));
+    problem, initial, options, [&calls](double) { return ++calls < 5; }, result, error));
   EXPECT_TRUE(result.Aborted);
   EXPECT_EQ(calls, 5);
   EXPECT_EQ(result.Sites.size(), 20u);

@@ -2,7 +2,7 @@
 // mesh repairs, against independent computations: exact 2D Voronoi polygons for a flat mesh,
 // brute-force nearest sites on a fine quadrature for a curved one.
 #include "cvtExactVoronoi.h"
-#include "cvtMeshOptimizer.h"
+#include "cvtProblems.h"
 #include "cvtQuality.h"
 #include "cvtRemesh.h"
 #include "cvtRestrictedVoronoi.h"
@@ -349,7 +349,8 @@ TEST(RestrictedVoronoi, OptimisedSphereRemeshIsAClosedOrientedSphere)
   cvt::OptimizerResult result;
   std::string error;
   const std::vector<double> initial = cvt::SampleMeshSites(mesh, 300, 4);
-  ASSERT_TRUE(cvt::RunMeshLBFGS(engine, initial, options, nullptr, result, error)) << error;
+  cvt::RestrictedProblem problem(engine);
+  ASSERT_TRUE(cvt::RunLBFGS(problem, { initial, {} }, options, nullptr, result, error)) << error;
   EXPECT_LT(result.History.back().Energy, 0.7 * result.History.front().Energy);
   // Normalised energy of a good CVT: about 0.16 (hexagons), random sites about 0.32.
   const double area = cvt::SurfaceArea(mesh);
@@ -392,8 +393,9 @@ TEST(RestrictedVoronoi, OpenSquareRemeshKeepsItsBorder)
   options.MaximumNumberOfIterations = 40;
   cvt::OptimizerResult result;
   std::string error;
-  ASSERT_TRUE(
-    cvt::RunMeshLloyd(engine, cvt::SampleMeshSites(mesh, 100, 2), options, nullptr, result, error));
+  cvt::RestrictedProblem problem(engine);
+  ASSERT_TRUE(cvt::RunLloyd(
+    problem, { cvt::SampleMeshSites(mesh, 100, 2), {} }, options, nullptr, result, error));
   cvt::RestrictedDual dual;
   ASSERT_TRUE(engine.ComputeDual(dual));
   const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1);

@@ -1,0 +1,382 @@
+#include "cvtOptimizer.h"
+
+#include <Eigen/Core>
+#include <LBFGSB.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <limits>
+
+namespace cvt
+{
+
+bool Problem::MoveSitesTo(const std::vector<double>& targets)
+{
+  return this->SetState(SiteState{ targets, {} });
+}
+
+void Problem::Gradient(const CellSums& sums, std::vector<double>& gradient) const
+{
+  const int d = this->Dimension();
+  gradient.assign(d * sums.Size(), 0.0);
+  for (size_t i = 0; i < sums.Size(); ++i)
+  {
+    gradient[d * i] = -2.0 * sums.MomentX[i];
+    gradient[d * i + 1] = -2.0 * sums.MomentY[i];
+    if (d == 3)
+    {
+      gradient[d * i + 2] = -2.0 * sums.MomentZ[i];
+    }
+  }
+}
+
+double Problem::GradientNorm(const CellSums& sums) const
+{
+  std::vector<double> gradient;
+  this->Gradient(sums, gradient);
+  double total = 0.0;
+  for (double g : gradient)
+  {
+    total += g * g;
+  }
+  return std::sqrt(total);
+}
+
+void Problem::SolverFrame(const std::vector<double>& sites, double center[3], double& scale) const
+{
+  const int d = this->Dimension();
+  double lo[3], hi[3];
+  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
+  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
+  for (size_t k = 0; k < sites.size(); ++k)
+  {
+    lo[k % d] = std::min(lo[k % d], sites[k]);
+    hi[k % d] = std::max(hi[k % d], sites[k]);
+  }
+  scale = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    center[c] = c < d && !sites.empty() ? 0.5 * (lo[c] + hi[c]) : 0.0;
+    scale = c < d && !sites.empty() ? std::max(scale, hi[c] - lo[c]) : scale;
+  }
+  if (!(scale > 0.0)) // one site, or all in one place: any unit lets them move
+  {
+    scale = 1.0;
+  }
+}
+
+void Problem::SolverBounds(const double center[3], double scale, std::vector<double>& lower,
+  std::vector<double>& upper, size_t size) const
+{
+  const int d = this->Dimension();
+  lower.resize(size);
+  upper.resize(size);
+  for (size_t k = 0; k < size; ++k)
+  {
+    lower[k] = center[k % d] - 10.0 * scale;
+    upper[k] = center[k % d] + 10.0 * scale;
+  }
+}
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+using Vector = Eigen::VectorXd;
+
+/// Thrown from inside a driver (or the solver) to end the run: a stop rule, or a failure.
+struct Stop
+{
+  std::string Reason;
+  bool Failed;
+};
+
+/// What both drivers share: evaluation, the best state, history, stop rules and progress.
+class Run
+{
+public:
+  Run(Problem& problem, const OptimizerOptions& options, const ProgressCallback& progress,
+    OptimizerResult& result)
+    : Problem_(problem)
+    , Options(options)
+    , Progress(progress)
+    , Result(result)
+    , Start(Clock::now())
+  {
+    this->Result = OptimizerResult();
+  }
+
+  /// Labels and integrates the current sites into Sums; keeps them if they are the best yet.
+  double Evaluate()
+  {
+    if (!this->Problem_.ComputeCellSums(this->Sums))
+    {
+      this->Fail();
+    }
+    ++this->Result.Evaluations;
+    const double energy = this->Sums.TotalEnergy();
+    this->LastIsBest = energy < this->BestEnergy;
+    if (this->LastIsBest)
+    {
+      this->BestEnergy = energy;
+      this->Result.Sums = this->Sums;
+      if (!this->Problem_.GetState(this->Result))
+      {
+        this->Fail();
+      }
+    }
+    return energy;
+  }
+
+  /// Appends an iterate to the history, reports progress and applies the stop rules: abort,
+  /// iteration cap, gradient tolerance and relative energy decrease (the last two from the
+  /// first iteration on).
+  void Record(int iteration, double energy, double gradientNorm)
+  {
+    std::vector<HistoryEntry>& history = this->Result.History;
+    const double before = history.empty() ? energy : history.back().Energy;
+    HistoryEntry entry;
+    entry.Iteration = iteration;
+    entry.Evaluations = this->Result.Evaluations;
+    entry.Energy = energy;
+    entry.GradientNorm = gradientNorm;
+    entry.Seconds = std::chrono::duration<double>(Clock::now() - this->Start).count();
+    history.push_back(entry);
+    this->Result.Iterations = iteration;
+    const int cap = this->Options.MaximumNumberOfIterations;
+    if (this->Progress && !this->Progress(static_cast<double>(iteration) / std::max(1, cap)))
+    {
+      this->Result.Aborted = true;
+      throw Stop{ "aborted", false };
+    }
+    if (iteration >= cap)
+    {
+      throw Stop{ "iteration limit", false };
+    }
+    if (iteration > 0 &&
+      gradientNorm <= this->Options.GradientTolerance * history.front().GradientNorm)
+    {
+      throw Stop{ "gradient tolerance reached", false };
+    }
+    const double decrease = (before - energy) / std::max(std::abs(before), 1e-300);
+    if (iteration > 0 && this->Options.Tolerance > 0.0 && decrease < this->Options.Tolerance)
+    {
+      throw Stop{ "relative energy decrease below tolerance", false };
+    }
+  }
+
+  /// One Lloyd iteration: evaluate, record, move to the centroids.
+  void LloydIteration(int iteration)
+  {
+    const double energy = this->Evaluate();
+    this->Record(iteration, energy, this->Problem_.GradientNorm(this->Sums));
+    if (!this->Problem_.MoveSitesToCentroids(this->Sums))
+    {
+      this->Fail();
+    }
+  }
+
+  /// Ends the run on the best sites, moved into the domain, with the problem labelled for them.
+  bool Finish(const std::string& reason, bool failed, std::string& error)
+  {
+    this->Result.StopReason = reason;
+    if (failed)
+    {
+      error = reason;
+      return false;
+    }
+    if (this->Result.Sites.empty())
+    {
+      error = "no sites were evaluated";
+      return false;
+    }
+    const bool moved = this->Problem_.Conform(this->Result.Sites);
+    if (moved || !this->LastIsBest)
+    {
+      CellSums sums;
+      if (!this->Problem_.SetState(this->Result) || !this->Problem_.ComputeCellSums(sums))
+      {
+        error = this->Problem_.GetLastError();
+        return false;
+      }
+      if (moved)
+      {
+        this->Result.Sums = sums;
+      }
+    }
+    return true;
+  }
+
+  [[noreturn]] void Fail() { throw Stop{ this->Problem_.GetLastError(), true }; }
+
+  Problem& Problem_;
+  const OptimizerOptions& Options;
+  const ProgressCallback& Progress;
+  OptimizerResult& Result;
+  Clock::time_point Start;
+  CellSums Sums; // of the last evaluation
+  double BestEnergy = std::numeric_limits<double>::infinity();
+  bool LastIsBest = false;
+};
+
+/// The energy seen by LBFGS++, in solver coordinates (x - center) / scale.
+class Objective
+{
+public:
+  Objective(Run& run, const double center[3], double scale)
+    : Run_(run)
+    , Dimension(run.Problem_.Dimension())
+    , Scale(scale)
+  {
+    std::copy(center, center + 3, this->Center);
+  }
+
+  Vector ToSolver(const std::vector<double>& sites) const
+  {
+    Vector x(sites.size());
+    for (size_t k = 0; k < sites.size(); ++k)
+    {
+      x[k] = (sites[k] - this->Center[k % this->Dimension]) / this->Scale;
+    }
+    return x;
+  }
+
+  /// Energy and gradient at x: the sites moved there, one labelling and one reduction. The
+  /// solver's first call is at the sites evaluated before it started, and reuses their sums.
+  double operator()(const Vector& x, Vector& gradient)
+  {
+    Problem& problem = this->Run_.Problem_;
+    double energy = this->Run_.Result.History.back().Energy;
+    if (!this->FirstCall)
+    {
+      std::vector<double> targets(x.size());
+      for (Eigen::Index k = 0; k < x.size(); ++k)
+      {
+        targets[k] = this->Center[k % this->Dimension] + x[k] * this->Scale;
+      }
+      if (!problem.MoveSitesTo(targets))
+      {
+        this->Run_.Fail();
+      }
+      energy = this->Run_.Evaluate();
+    }
+    this->FirstCall = false;
+    std::vector<double> g;
+    problem.Gradient(this->Run_.Sums, g);
+    gradient.resize(x.size());
+    for (Eigen::Index k = 0; k < x.size(); ++k)
+    {
+      gradient[k] = g[k] * this->Scale;
+    }
+    return energy;
+  }
+
+  /// Called after every line search, at the accepted iterate.
+  void AcceptIterate(double energy, const Vector& gradient)
+  {
+    this->Run_.Record(this->Run_.Result.Iterations + 1, energy, gradient.norm() / this->Scale);
+  }
+
+private:
+  Run& Run_;
+  int Dimension;
+  double Center[3];
+  double Scale;
+  bool FirstCall = true;
+};
+
+/// LBFGS++'s More-Thuente line search, reporting every accepted iterate to the objective.
+template<typename Scalar>
+class ReportingLineSearch
+{
+public:
+  using SolverVector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  template<typename Function>
+  static void LineSearch(Function& f, Scalar& fx, SolverVector& x, SolverVector& grad, Scalar& step,
+    const Scalar& stepMax, const SolverVector& direction, const SolverVector& previous,
+    const LBFGSpp::LBFGSBParam<Scalar>& param)
+  {
+    LBFGSpp::LineSearchMoreThuente<Scalar>::LineSearch(
+      f, fx, x, grad, step, stepMax, direction, previous, param);
+    f.AcceptIterate(fx, grad);
+  }
+};
+}
+
+bool RunLloyd(Problem& problem, const SiteState& initial, const OptimizerOptions& options,
+  const ProgressCallback& progress, OptimizerResult& result, std::string& error)
+{
+  Run run(problem, options, progress, result);
+  try
+  {
+    if (!problem.SetState(initial))
+    {
+      run.Fail();
+    }
+    for (int iteration = 0;; ++iteration)
+    {
+      run.LloydIteration(iteration);
+    }
+  }
+  catch (const Stop& stop)
+  {
+    return run.Finish(stop.Reason, stop.Failed, error);
+  }
+}
+
+bool RunLBFGS(Problem& problem, const SiteState& initial, const OptimizerOptions& options,
+  const ProgressCallback& progress, OptimizerResult& result, std::string& error)
+{
+  Run run(problem, options, progress, result);
+  std::string reason = "the solver reported convergence";
+  try
+  {
+    if (!problem.SetState(initial))
+    {
+      run.Fail();
+    }
+    const int warmUp = std::min(options.LloydWarmUpIterations, options.MaximumNumberOfIterations);
+    for (int iteration = 0; iteration < warmUp; ++iteration)
+    {
+      run.LloydIteration(iteration);
+    }
+    SiteState start;
+    if (!problem.GetState(start))
+    {
+      run.Fail();
+    }
+    double center[3], scale;
+    problem.SolverFrame(start.Sites, center, scale);
+    Objective objective(run, center, scale);
+    Vector x = objective.ToSolver(start.Sites);
+    std::vector<double> lower, upper;
+    problem.SolverBounds(center, scale, lower, upper, start.Sites.size());
+    const double energy = run.Evaluate();
+    run.Record(warmUp, energy, problem.GradientNorm(run.Sums));
+
+    LBFGSpp::LBFGSBParam<double> parameters;
+    parameters.m = std::max(1, options.NumberOfCorrections);
+    parameters.epsilon = 0.0; // no stop rule of the solver's own: Run::Record applies them all
+    parameters.epsilon_rel = 0.0;
+    parameters.max_iterations = 0;
+    parameters.max_linesearch = 20;
+    LBFGSpp::LBFGSBSolver<double, ReportingLineSearch> solver(parameters);
+    double solverEnergy = 0.0;
+    solver.minimize(
+      objective, x, solverEnergy, objective.ToSolver(lower), objective.ToSolver(upper));
+  }
+  catch (const Stop& stop)
+  {
+    return run.Finish(stop.Reason, stop.Failed, error);
+  }
+  catch (const std::exception& failure)
+  {
+    // The line search found no point of sufficient decrease: energy and gradient are as
+    // accurate as float sums allow, so this is where the method ends.
+    reason = std::string("no sufficient decrease possible (") + failure.what() + ")";
+  }
+  return run.Finish(reason, false, error);
+}
+
+} // namespace cvt
