@@ -12,6 +12,7 @@
 #include <GL/glx.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
@@ -192,6 +193,22 @@ std::string vtkCVTOpenGLContext::CheckTextures(int width, int height, double gpu
     this->GetAvailableMemory(), what + " of " + size,
     this->SoftwareRenderer ? "memory (software OpenGL)" : "GPU memory",
     advice + " or the CPU engine");
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+std::atomic<long long> TextureAllocations{ 0 };
+}
+
+long long vtkCVTOpenGLContext::GetNumberOfTextureAllocations()
+{
+  return TextureAllocations;
+}
+
+void vtkCVTOpenGLContext::CountTextureAllocation()
+{
+  ++TextureAllocations;
 }
 
 //------------------------------------------------------------------------------

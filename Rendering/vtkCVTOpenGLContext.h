@@ -58,6 +58,13 @@ public:
   std::string CheckTextures(int width, int height, double gpuBytesPerPixel,
     double softwareBytesPerPixel, const std::string& what, const std::string& advice) const;
 
+  /**
+   * How often the CVT engines gave a texture storage in this process. Storage follows sizes
+   * (domain, site count), so evaluations and optimiser steps add nothing; tests check this.
+   */
+  static long long GetNumberOfTextureAllocations();
+  static void CountTextureAllocation();
+
 protected:
   vtkCVTOpenGLContext();
   ~vtkCVTOpenGLContext() override;

@@ -176,7 +176,6 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
-  in.Release(window);
   this->Grid = grid;
   this->GridSize[0] = grid.Width;
   this->GridSize[1] = grid.Height;
@@ -251,15 +250,18 @@ bool vtkCVTOpenGLEngine::SetSites(const std::vector<double>& sites)
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   Internals& in = *this->Internal;
-  bool ok = true;
-  for (int i = 0; i < 2 && ok; ++i)
+  // The slot textures follow the site count; an optimiser's step only uploads the sites.
+  bool ok = AllocateFloatTexture(in.Sites[0], window, slotWidth, slotHeight, 4, texels.data());
+  if (ok &&
+    (slotWidth != this->SlotSize[0] || slotHeight != this->SlotSize[1] || !in.Sums->GetHandle()))
   {
-    ok = AllocateFloatTexture(in.Sites[i], window, slotWidth, slotHeight, 4, texels.data()) &&
-      AttachTargets(in.SitesFramebuffer[i], window, in.Sites[i]);
+    ok = AllocateFloatTexture(in.Sites[1], window, slotWidth, slotHeight, 4) &&
+      AttachTargets(in.SitesFramebuffer[0], window, in.Sites[0]) &&
+      AttachTargets(in.SitesFramebuffer[1], window, in.Sites[1]) &&
+      AllocateFloatTexture(in.Sums, window, slotWidth, slotHeight, 4) &&
+      AllocateFloatTexture(in.Radius, window, slotWidth, slotHeight, 1) &&
+      AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Radius);
   }
-  ok = ok && AllocateFloatTexture(in.Sums, window, slotWidth, slotHeight, 4) &&
-    AllocateFloatTexture(in.Radius, window, slotWidth, slotHeight, 1) &&
-    AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Radius);
   if (!ok)
   {
     return this->Fail("the GPU could not allocate the site textures");

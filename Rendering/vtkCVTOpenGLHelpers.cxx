@@ -29,6 +29,22 @@ ScopedContext::~ScopedContext()
 bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
   int height, int components, const float* data)
 {
+  if (texture->GetHandle() && texture->GetContext() == window &&
+    texture->GetWidth() == static_cast<unsigned int>(width) &&
+    texture->GetHeight() == static_cast<unsigned int>(height) &&
+    texture->GetComponents() == components && texture->GetVTKDataType() == VTK_FLOAT)
+  {
+    if (data)
+    {
+      texture->Activate();
+      window->GetState()->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height,
+        texture->GetFormat(VTK_FLOAT, components, false), GL_FLOAT, data);
+      texture->Deactivate();
+    }
+    return true;
+  }
+  vtkCVTOpenGLContext::CountTextureAllocation();
   texture->SetContext(window);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);

@@ -29,8 +29,10 @@ private:
   vtkCVTOpenGLContext* Context;
 };
 
-/// Makes `texture` a nearest-filtered float texture of the given size and components,
-/// uploading `data` when given.
+/// Makes `texture` a nearest-filtered float texture of the given size and components and
+/// uploads `data` when given. Storage follows sizes: it is specified only when the texture has
+/// none of that size and format (counted by vtkCVTOpenGLContext::GetNumberOfTextureAllocations);
+/// otherwise `data` replaces the texels in place.
 bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
   int height, int components, const float* data = nullptr);
 

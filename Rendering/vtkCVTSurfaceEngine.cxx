@@ -63,10 +63,10 @@ struct vtkCVTSurfaceEngine::Internals
 
   void Release(vtkOpenGLRenderWindow* window)
   {
-    for (vtkTextureObject* t :
-      { this->Positions.Get(), this->Weights.Get(), this->Seeds[0].Get(), this->Seeds[1].Get(),
-        this->Sites.Get(), this->Sums.Get(), this->Energy.Get(), this->Targets.Get(),
-        this->NearestPoints.Get(), this->NearestCorners.Get(), this->Nearest.Get() })
+    for (vtkTextureObject* t : { this->Positions.Get(), this->Weights.Get(), this->Seeds[0].Get(),
+           this->Seeds[1].Get(), this->Sites.Get(), this->Sums.Get(), this->Energy.Get(),
+           this->Targets.Get(), this->NearestPoints.Get(), this->NearestCorners.Get(),
+           this->Nearest.Get(), this->NearestDepth.Get() })
     {
       t->ReleaseGraphicsResources(window);
     }
@@ -152,7 +152,6 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   Internals& in = *this->Internal;
-  in.Release(window);
   this->Image = image;
   this->GridSize[0] = image.Width;
   this->GridSize[1] = image.Height;
@@ -237,7 +236,7 @@ bool vtkCVTSurfaceEngine::SetSites(
   {
     return this->Fail("the GPU could not allocate the site texture");
   }
-  if (n != this->NumberOfSites || slotWidth != this->SlotSize[0])
+  if (n != this->NumberOfSites || slotWidth != this->SlotSize[0] || !in.Sums->GetHandle())
   {
     if (!AllocateFloatTexture(in.Sums, window, slotWidth, slotHeight, 4) ||
       !AllocateFloatTexture(in.Energy, window, slotWidth, slotHeight, 1) ||

@@ -760,3 +760,51 @@ TEST(GLObjects, EnginesStopGrowing)
   std::cout << "[ measured ] after ReleaseGraphicsResources: " << LiveGLObjects(flat->GetContext())
             << " and " << LiveGLObjects(surface->GetContext()) << "\n";
 }
+
+// Texture storage follows sizes, not calls: once a domain and a site count are set, moving the
+// sites (every L-BFGS evaluation), evaluating, Lloyd steps, nearest points and setting the same
+// domain again give no texture new storage; a new site count or domain size does.
+TEST(GLObjects, StorageFollowsSizes)
+{
+  cvt::Grid grid;
+  grid.Width = grid.Height = 64;
+  const std::vector<float> density(64 * 64, 1.0f);
+  const cvt::GeometryImage gi = ToGeometryImage(Torus(64, 32));
+  vtkNew<vtkCVTOpenGLEngine> flat;
+  vtkNew<vtkCVTSurfaceEngine> surface;
+  std::mt19937 random(3);
+  const auto planeSites = [&random](int n)
+  {
+    std::vector<double> sites(2 * static_cast<size_t>(n));
+    for (double& c : sites)
+    {
+      c = std::uniform_real_distribution<double>(0.5, 63.5)(random);
+    }
+    return sites;
+  };
+  cvt::CellSums sums;
+  std::vector<long long> pixels;
+  std::vector<double> onSurface = cvt::SampleSurfaceSites(gi, 30, 1, pixels);
+  ASSERT_TRUE(flat->SetDomain(grid, density) && flat->SetSites(planeSites(30)) &&
+    flat->ComputeCellSums(sums) && flat->MoveSitesToCentroids())
+    << flat->GetLastError();
+  ASSERT_TRUE(surface->SetGeometryImage(gi) && surface->SetSites(onSurface, pixels) &&
+    surface->ComputeCellSums(sums) && surface->NearestPointsInCells(onSurface, onSurface, pixels))
+    << surface->GetLastError();
+  const long long settled = vtkCVTOpenGLContext::GetNumberOfTextureAllocations();
+  for (int round = 0; round < 10; ++round)
+  {
+    ASSERT_TRUE(flat->SetSites(planeSites(30)) && flat->ComputeCellSums(sums) &&
+      flat->MoveSitesToCentroids() && flat->ComputeCellSums(sums));
+    onSurface = cvt::SampleSurfaceSites(gi, 30, 2 + round, pixels);
+    std::vector<double> nearest = onSurface;
+    ASSERT_TRUE(surface->SetSites(onSurface, pixels) && surface->ComputeCellSums(sums) &&
+      surface->NearestPointsInCells(onSurface, nearest, pixels));
+  }
+  ASSERT_TRUE(flat->SetDomain(grid, density) && flat->SetSites(planeSites(30)));
+  EXPECT_EQ(vtkCVTOpenGLContext::GetNumberOfTextureAllocations(), settled)
+    << "moving sites or setting the same domain gave textures new storage";
+  ASSERT_TRUE(flat->SetSites(planeSites(200)) && flat->ComputeCellSums(sums));
+  EXPECT_GT(vtkCVTOpenGLContext::GetNumberOfTextureAllocations(), settled)
+    << "a new site count kept the old slot textures";
+}
