@@ -25,6 +25,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
@@ -93,6 +94,31 @@ vtkCVTImageFilter::vtkCVTImageFilter()
   // What progress bars show (ParaView: the label the user knows, not the class name).
   this->SetProgressText("CVT Image");
   // No density array by default: uniform density.
+}
+
+//------------------------------------------------------------------------------
+vtkCVTImageFilter::~vtkCVTImageFilter() = default;
+
+//------------------------------------------------------------------------------
+void vtkCVTImageFilter::SetRenderWindow(vtkRenderWindow* window)
+{
+  if (window != this->RenderWindow)
+  {
+    this->RenderWindow = window;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkRenderWindow* vtkCVTImageFilter::GetRenderWindow() const
+{
+  return this->RenderWindow;
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTImageFilter::ReleaseGraphicsResources()
+{
+  this->OpenGLEngine = nullptr; // its GL objects, then its context
 }
 
 //------------------------------------------------------------------------------
@@ -344,11 +370,19 @@ bool vtkCVTImageFilter::Compute(
 
   // --- The optimiser, on the engine chosen.
   const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
-  vtkNew<vtkCVTOpenGLEngine> gpu;
+  if (choice.UseOpenGL && !this->OpenGLEngine)
+  {
+    this->OpenGLEngine = vtkSmartPointer<vtkCVTOpenGLEngine>::New();
+  }
+  vtkCVTOpenGLEngine* gpu = this->OpenGLEngine;
   cvt::ExactEngine cpu;
   cvt::Engine& engine = choice.UseOpenGL ? static_cast<cvt::Engine&>(*gpu) : cpu;
-  gpu->SetAdaptiveStep(this->AdaptiveJumpFlooding);
-  gpu->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
+  if (choice.UseOpenGL)
+  {
+    gpu->SetRenderWindow(this->RenderWindow);
+    gpu->SetAdaptiveStep(this->AdaptiveJumpFlooding);
+    gpu->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
+  }
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
   options.Tolerance = this->Tolerance;
@@ -383,7 +417,6 @@ bool vtkCVTImageFilter::Compute(
     vtkErrorMacro("" << what << engine.GetLastError() << ".");
     return false;
   }
-  gpu->ReleaseGraphicsResources();
   if (result.StopReason.rfind("no sufficient decrease", 0) == 0)
   {
     vtkWarningMacro("L-BFGS stopped after " << result.Iterations
@@ -452,4 +485,6 @@ void vtkCVTImageFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Engine: " << cvtvtk::EngineKindName(this->Engine) << "\n";
   os << indent << "ContextDescription: "
      << (this->ContextDescription.empty() ? "(none)" : this->ContextDescription) << "\n";
+  os << indent << "RenderWindow: " << this->RenderWindow.Get() << "\n";
+  os << indent << "OpenGLEngine: " << (this->OpenGLEngine ? "kept" : "(none yet)") << "\n";
 }

@@ -38,12 +38,15 @@
 
 #include "cvtFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkTimeStamp.h" // for LastFailure
+#include "vtkSmartPointer.h" // for OpenGLEngine
+#include "vtkTimeStamp.h"    // for LastFailure
 
 #include <string> // for std::string
 
+class vtkCVTOpenGLEngine;
 class vtkImageData;
 class vtkPolyData;
+class vtkRenderWindow;
 class vtkTable;
 
 class CVTFILTERS_EXPORT vtkCVTImageFilter : public vtkPolyDataAlgorithm
@@ -190,6 +193,19 @@ public:
 
   ///@{
   /**
+   * The OpenGL engine (its context, compiled shaders and textures) lives as long as the filter,
+   * so an update after a changed property pays only for what changed. SetRenderWindow runs it
+   * on that window's context instead of one of its own (nullptr, the default, finds one);
+   * ReleaseGraphicsResources frees the engine, its GL objects and context now (the next update
+   * makes them again).
+   */
+  void SetRenderWindow(vtkRenderWindow* window);
+  vtkRenderWindow* GetRenderWindow() const;
+  void ReleaseGraphicsResources();
+  ///@}
+
+  ///@{
+  /**
    * What RequestData returns after bad input or a failed run (the error is reported and the
    * outputs are empty either way): 0 when on (default, VTK's convention: Update() fails), 1
    * when off, so that ParaView shows the empty outputs (clears the view) and prints the error
@@ -202,7 +218,7 @@ public:
 
 protected:
   vtkCVTImageFilter();
-  ~vtkCVTImageFilter() override = default;
+  ~vtkCVTImageFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
@@ -228,6 +244,8 @@ protected:
   bool SplitBoundaryPixels = true;
   int Engine = AUTO;
   std::string ContextDescription;
+  vtkSmartPointer<vtkRenderWindow> RenderWindow;
+  vtkSmartPointer<vtkCVTOpenGLEngine> OpenGLEngine; // made on first use, kept across updates
 
 private:
   vtkCVTImageFilter(const vtkCVTImageFilter&) = delete;

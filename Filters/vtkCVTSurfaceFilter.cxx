@@ -23,6 +23,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -59,6 +60,31 @@ vtkCVTSurfaceFilter::vtkCVTSurfaceFilter()
   this->SetNumberOfOutputPorts(4);
   // What progress bars show (ParaView: the label the user knows, not the class name).
   this->SetProgressText("CVT Surface");
+}
+
+//------------------------------------------------------------------------------
+vtkCVTSurfaceFilter::~vtkCVTSurfaceFilter() = default;
+
+//------------------------------------------------------------------------------
+void vtkCVTSurfaceFilter::SetRenderWindow(vtkRenderWindow* window)
+{
+  if (window != this->RenderWindow)
+  {
+    this->RenderWindow = window;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkRenderWindow* vtkCVTSurfaceFilter::GetRenderWindow() const
+{
+  return this->RenderWindow;
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTSurfaceFilter::ReleaseGraphicsResources()
+{
+  this->OpenGLEngine = nullptr; // its GL objects, then its context
 }
 
 vtkPolyData* vtkCVTSurfaceFilter::GetSitesOutput()
@@ -242,7 +268,12 @@ bool vtkCVTSurfaceFilter::Compute(
                           << this->NumberOfSites << " sites; use fewer sites or a finer image.");
     return false;
   }
-  vtkNew<vtkCVTSurfaceEngine> engine;
+  if (!this->OpenGLEngine)
+  {
+    this->OpenGLEngine = vtkSmartPointer<vtkCVTSurfaceEngine>::New();
+  }
+  vtkCVTSurfaceEngine* engine = this->OpenGLEngine;
+  engine->SetRenderWindow(this->RenderWindow);
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
   options.Tolerance = this->Tolerance;
@@ -264,7 +295,6 @@ bool vtkCVTSurfaceFilter::Compute(
     (this->Method == LLOYD ? cvt::RunLloyd(surface, initial, options, progress, result, error)
                            : cvt::RunLBFGS(surface, initial, options, progress, result, error)) &&
     engine->GetLabels(labels);
-  engine->ReleaseGraphicsResources();
   if (!optimized)
   {
     vtkErrorMacro("The GPU surface CVT failed: "
@@ -427,4 +457,6 @@ void vtkCVTSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
   os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
   os << indent << "Engine: " << cvtvtk::EngineKindName(this->Engine) << "\n";
+  os << indent << "RenderWindow: " << this->RenderWindow.Get() << "\n";
+  os << indent << "OpenGLEngine: " << (this->OpenGLEngine ? "kept" : "(none yet)") << "\n";
 }

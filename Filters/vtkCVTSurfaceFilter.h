@@ -24,7 +24,8 @@
 
 #include "cvtFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkTimeStamp.h" // for LastFailure
+#include "vtkSmartPointer.h" // for OpenGLEngine
+#include "vtkTimeStamp.h"    // for LastFailure
 
 #include <string> // for std::string
 
@@ -32,8 +33,10 @@ namespace cvt
 {
 struct GeometryImage;
 }
+class vtkCVTSurfaceEngine;
 class vtkImageData;
 class vtkPolyData;
+class vtkRenderWindow;
 class vtkTable;
 
 class CVTFILTERS_EXPORT vtkCVTSurfaceFilter : public vtkPolyDataAlgorithm
@@ -101,6 +104,19 @@ public:
 
   const std::string& GetContextDescription() const { return this->ContextDescription; }
 
+  ///@{
+  /**
+   * The OpenGL engine (its context, compiled shaders and textures) lives as long as the filter,
+   * so an update after a changed property pays only for what changed. SetRenderWindow runs it
+   * on that window's context instead of one of its own (nullptr, the default, finds one);
+   * ReleaseGraphicsResources frees the engine, its GL objects and context now (the next update
+   * makes them again).
+   */
+  void SetRenderWindow(vtkRenderWindow* window);
+  vtkRenderWindow* GetRenderWindow() const;
+  void ReleaseGraphicsResources();
+  ///@}
+
   /**
    * Reads a geometry image (Position required; Normal and AreaWeight computed when missing;
    * Mask optional; WrapU/WrapV field data) into the numerical core's form. Returns false with
@@ -122,7 +138,7 @@ public:
 
 protected:
   vtkCVTSurfaceFilter();
-  ~vtkCVTSurfaceFilter() override = default;
+  ~vtkCVTSurfaceFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
@@ -144,6 +160,8 @@ protected:
   int NumberOfCorrections = 7;
   int Engine = AUTO;
   std::string ContextDescription;
+  vtkSmartPointer<vtkRenderWindow> RenderWindow;
+  vtkSmartPointer<vtkCVTSurfaceEngine> OpenGLEngine; // made on first use, kept across updates
 
   /**
    * The CPU engine's run: the geometry image (with `valid` pixels in its mask) as a mesh through

@@ -42,15 +42,27 @@ vtkCVTOpenGLContext::vtkCVTOpenGLContext()
 //------------------------------------------------------------------------------
 vtkCVTOpenGLContext::~vtkCVTOpenGLContext()
 {
-  if (this->Window)
+  this->SetRenderWindow(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTOpenGLContext::SetRenderWindow(vtkOpenGLRenderWindow* window)
+{
+  if (window == this->HandedIn && (this->Window == window || !this->Window))
+  {
+    return;
+  }
+  if (this->Window && this->Window != this->HandedIn)
   {
     // Release every GL object of the window while its context is current, then give the
     // thread its previous context back.
     this->MakeCurrent();
     this->Window->Finalize();
-    this->Window = nullptr;
     this->RestorePrevious();
   }
+  this->Window = nullptr;
+  this->HandedIn = window;
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -70,7 +82,26 @@ bool vtkCVTOpenGLContext::Initialize()
 
   this->Saved->Valid = false;
   this->MakeCurrent(); // remembers the thread's context; no window yet
-  if (tryEgl)
+  if (this->HandedIn)
+  {
+    this->HandedIn->Initialize(); // nothing to do for a window that has its context
+    GLint major = 0;
+    this->HandedIn->MakeCurrent();
+    if (this->HandedIn->IsCurrent())
+    {
+      glGetIntegerv(GL_MAJOR_VERSION, &major);
+    }
+    if (major < 3)
+    {
+      this->LastError = std::string("the render window handed in (") +
+        this->HandedIn->GetClassName() + ") has no OpenGL >= 3.2 context";
+      this->RestorePrevious();
+      return false;
+    }
+    this->Window = this->HandedIn;
+    this->Description = std::string("handed-in ") + this->HandedIn->GetClassName();
+  }
+  if (!this->Window && tryEgl)
   {
     vtkNew<vtkCVTEGLRenderWindow> egl;
     if (egl->CreateHeadlessContext())
@@ -209,6 +240,12 @@ long long vtkCVTOpenGLContext::GetNumberOfTextureAllocations()
 void vtkCVTOpenGLContext::CountTextureAllocation()
 {
   ++TextureAllocations;
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLRenderWindow* vtkCVTOpenGLContext::GetHandedInWindow() const
+{
+  return this->HandedIn;
 }
 
 //------------------------------------------------------------------------------

@@ -27,6 +27,16 @@ public:
   vtkTypeMacro(vtkCVTOpenGLContext, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Use the context of this render window instead of finding one (the SetRenderWindow pattern of
+   * VTK's GPU image filters: an application or a view shares its context). It must have, or be
+   * able to initialise, an OpenGL >= 3.2 context; it is never finalised here. nullptr goes back
+   * to a context of our own. A context already in use is let go: its owner (an engine) must have
+   * released its GL objects first.
+   */
+  void SetRenderWindow(vtkOpenGLRenderWindow* window);
+  vtkOpenGLRenderWindow* GetHandedInWindow() const;
+
   /** Find a context. Returns false with a message in GetLastError() when there is none. */
   bool Initialize();
   bool IsInitialized() const { return this->Window != nullptr; }
@@ -76,6 +86,7 @@ private:
   struct SavedContext;
   std::unique_ptr<SavedContext> Saved;
   vtkSmartPointer<vtkOpenGLRenderWindow> Window;
+  vtkSmartPointer<vtkOpenGLRenderWindow> HandedIn; // see SetRenderWindow
   std::string LastError;
   std::string Description;
   int MaximumTextureSize = 0;

@@ -131,6 +131,17 @@ void vtkCVTOpenGLEngine::ReleaseGraphicsResources()
 }
 
 //------------------------------------------------------------------------------
+void vtkCVTOpenGLEngine::SetRenderWindow(vtkRenderWindow* window)
+{
+  auto* openGLWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (openGLWindow != this->Context->GetHandedInWindow())
+  {
+    this->ReleaseGraphicsResources();
+    this->Context->SetRenderWindow(openGLWindow);
+  }
+}
+
+//------------------------------------------------------------------------------
 std::string vtkCVTOpenGLEngine::GetContextDescription() const
 {
   return this->Context->GetDescription();

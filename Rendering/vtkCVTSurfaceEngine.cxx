@@ -111,6 +111,17 @@ void vtkCVTSurfaceEngine::ReleaseGraphicsResources()
 }
 
 //------------------------------------------------------------------------------
+void vtkCVTSurfaceEngine::SetRenderWindow(vtkRenderWindow* window)
+{
+  auto* openGLWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (openGLWindow != this->Context->GetHandedInWindow())
+  {
+    this->ReleaseGraphicsResources();
+    this->Context->SetRenderWindow(openGLWindow);
+  }
+}
+
+//------------------------------------------------------------------------------
 std::string vtkCVTSurfaceEngine::GetContextDescription() const
 {
   return this->Context->GetDescription();

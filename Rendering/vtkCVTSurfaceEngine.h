@@ -21,6 +21,7 @@
 #include <memory> // for unique_ptr
 
 class vtkCVTOpenGLContext;
+class vtkRenderWindow;
 
 class CVTRENDERING_EXPORT vtkCVTSurfaceEngine
   : public vtkObject
@@ -52,6 +53,15 @@ public:
   std::string GetContextDescription() const;
   /** The engine's own OpenGL context (tests count its live objects). */
   vtkCVTOpenGLContext* GetContext() const { return this->Context; }
+
+  /**
+   * Run on this render window's OpenGL context instead of one of the engine's own (see
+   * vtkCVTOpenGLContext::SetRenderWindow); nullptr (the default) finds one. A change of context
+   * releases the engine's GL objects, so the geometry image must be set again.
+   */
+  void SetRenderWindow(vtkRenderWindow* window);
+
+  /** Free every GL object now (also done on destruction). */
   void ReleaseGraphicsResources();
 
 protected:

@@ -22,7 +22,12 @@
 //            ("scaling,engine,side,sites,ms_per_iteration,resident_mib,iterations"), drawn by
 //            Examples/plot_scaling.py. A software OpenGL that needs more than 5 s for one
 //            iteration is measured once and left out of the larger sizes.
-// Usage: cvtBenchmark [timing|targets|surface|cpu|all]
+//   lifetime: the filters on the OpenGL engine (image filter at 512x512, surface filter at
+//            1024x512, 1000 sites, 2 Lloyd iterations; medians of 3): the first update, and a
+//            second update after changing NumberOfSites (1000 -> 1100) by the same filter (it keeps
+//            its engine, context and shaders) and by a new filter (a new engine, as every update
+//            made before).
+// Usage: cvtBenchmark [timing|targets|surface|cpu|lifetime|all]
 //        cvtBenchmark scaling [MAX_SIDE (4096)] [MAX_SITES (100000)]
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
@@ -31,13 +36,16 @@
 #include "cvtQuality.h"
 #include "cvtSampling.h"
 #include "vtkCVTGeometryImageSource.h"
+#include "vtkCVTImageFilter.h"
 #include "vtkCVTOpenGLEngine.h"
 #include "vtkCVTSurfaceEngine.h"
 #include "vtkCVTSurfaceFilter.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkVariant.h"
 
@@ -420,6 +428,69 @@ bool SurfaceTiming(int width, int height)
   return true;
 }
 
+/// Seconds of one Update() of `filter` after setting its site count.
+template<typename Filter>
+double TimedUpdate(Filter* filter, int sites)
+{
+  filter->SetNumberOfSites(sites);
+  const auto start = Clock::now();
+  filter->Update();
+  return filter->GetSitesOutput()->GetNumberOfPoints() == sites ? SecondsSince(start) : -1.0;
+}
+
+/// First update, and a second one with 1100 sites by the same filter and by a new one; medians
+/// of three rounds.
+template<typename Filter>
+bool Lifetime(const char* name, vtkDataObject* input, int engine)
+{
+  const auto make = [&]()
+  {
+    vtkSmartPointer<Filter> filter = vtkSmartPointer<Filter>::New();
+    filter->SetInputData(input);
+    filter->SetEngine(engine);
+    filter->SetMethod(Filter::LLOYD);
+    filter->SetMaximumNumberOfIterations(2);
+    filter->SetTolerance(0.0);
+    return filter;
+  };
+  std::vector<double> first, again, fresh;
+  std::string context;
+  for (int round = 0; round < 3; ++round)
+  {
+    vtkSmartPointer<Filter> kept = make();
+    first.push_back(TimedUpdate(kept.Get(), 1000));
+    again.push_back(TimedUpdate(kept.Get(), 1100));
+    fresh.push_back(TimedUpdate(make().Get(), 1100));
+    context = kept->GetContextDescription();
+    if (first.back() < 0 || again.back() < 0 || fresh.back() < 0)
+    {
+      std::fprintf(stderr, "%s: an update failed\n", name);
+      return false;
+    }
+  }
+  std::printf("%s, 2 Lloyd iterations: first update %.3f s; after NumberOfSites 1000 -> 1100: "
+              "%.3f s by the same filter, %.3f s by a new filter (medians of 3) [%s]\n",
+    name, Median(first), Median(again), Median(fresh), context.c_str());
+  return true;
+}
+
+bool FilterLifetimes()
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(512, 512, 1);
+  vtkNew<vtkFloatArray> density;
+  density->SetName("density");
+  density->SetNumberOfTuples(512 * 512);
+  density->Fill(1.0);
+  image->GetPointData()->AddArray(density);
+  vtkNew<vtkCVTGeometryImageSource> torus;
+  torus->SetResolution(1024, 512);
+  torus->Update();
+  return Lifetime<vtkCVTImageFilter>("image filter 512x512", image, vtkCVTImageFilter::OPENGL) &&
+    Lifetime<vtkCVTSurfaceFilter>(
+      "surface filter 1024x512", torus->GetOutput(), vtkCVTSurfaceFilter::OPENGL);
+}
+
 bool SurfaceTarget()
 {
   vtkNew<vtkCVTGeometryImageSource> source;
@@ -492,10 +563,12 @@ int main(int argc, char* argv[])
     }
     return Scaling(side, sites) ? 0 : 1;
   }
-  if (what != "timing" && what != "targets" && what != "surface" && what != "cpu" && what != "all")
+  if (what != "timing" && what != "targets" && what != "surface" && what != "cpu" &&
+    what != "lifetime" && what != "all")
   {
     std::fprintf(stderr,
-      "usage: %s [timing|targets|surface|cpu|all] | scaling [MAX_SIDE] [MAX_SITES]\n", argv[0]);
+      "usage: %s [timing|targets|surface|cpu|lifetime|all] | scaling [MAX_SIDE] [MAX_SITES]\n",
+      argv[0]);
     return 2;
   }
   bool ok = true;
@@ -515,6 +588,10 @@ int main(int argc, char* argv[])
   if (what == "surface" || what == "all")
   {
     ok = ok && SurfaceTiming(512, 256) && SurfaceTiming(1024, 512) && SurfaceTarget();
+  }
+  if (what == "lifetime" || what == "all")
+  {
+    ok = ok && FilterLifetimes();
   }
   return ok ? 0 : 1;
 }

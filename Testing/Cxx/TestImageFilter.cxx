@@ -622,9 +622,10 @@ TEST(ImageFilterBadInput, NoOpenGLContext)
 
 TEST(ImageFilterBadInput, OpenGLLostBetweenUpdates)
 {
-  // A result, then OpenGL goes away (a driver reset, a server losing its GPU: simulated by
-  // forbidding every context), then it comes back. Each update makes its own context, so the
-  // second update fails cleanly with empty outputs and the third works again.
+  // A result, then no new context can be made (a driver reset, a server losing its GPU:
+  // simulated by forbidding every context). The filter keeps its engine and context, so the
+  // next update still works; once its graphics resources are released it needs a new context
+  // and fails cleanly with empty outputs; when OpenGL comes back it works again.
   vtkNew<vtkCVTImageFilter> filter;
   filter->SetInputData(MakeImage(16, 16));
   filter->SetNumberOfSites(4);
@@ -633,12 +634,16 @@ TEST(ImageFilterBadInput, OpenGLLostBetweenUpdates)
   ASSERT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 4);
   setenv("CVT_OPENGL_CONTEXT", "none", 1);
   filter->SetNumberOfSites(5);
+  filter->Update();
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 5);
+  filter->ReleaseGraphicsResources();
+  filter->SetNumberOfSites(6);
   const std::string message = RunExpectingError(filter);
   unsetenv("CVT_OPENGL_CONTEXT");
   EXPECT_TRUE(Contains(message, "no OpenGL >= 3.2 context")) << message;
-  filter->SetNumberOfSites(6);
+  filter->SetNumberOfSites(7);
   filter->Update();
-  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 6);
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 7);
 }
 
 TEST(ImageFilterBadInput, ThenAGoodRunStillWorks)
