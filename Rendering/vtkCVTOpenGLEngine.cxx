@@ -121,30 +121,9 @@ vtkCVTOpenGLEngine::~vtkCVTOpenGLEngine()
 }
 
 //------------------------------------------------------------------------------
-void vtkCVTOpenGLEngine::ReleaseGraphicsResources()
+void vtkCVTOpenGLEngine::ReleaseObjects(vtkOpenGLRenderWindow* window)
 {
-  if (this->Context->IsInitialized())
-  {
-    ScopedContext current(this->Context);
-    this->Internal->Release(this->Context->GetRenderWindow());
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkCVTOpenGLEngine::SetRenderWindow(vtkRenderWindow* window)
-{
-  auto* openGLWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (openGLWindow != this->Context->GetHandedInWindow())
-  {
-    this->ReleaseGraphicsResources();
-    this->Context->SetRenderWindow(openGLWindow);
-  }
-}
-
-//------------------------------------------------------------------------------
-std::string vtkCVTOpenGLEngine::GetContextDescription() const
-{
-  return this->Context->GetDescription();
+  this->Internal->Release(window);
 }
 
 //------------------------------------------------------------------------------
@@ -657,7 +636,6 @@ bool vtkCVTOpenGLEngine::GetLabels(std::vector<int>& labels)
 void vtkCVTOpenGLEngine::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Context: " << this->GetContextDescription() << "\n";
   os << indent << "Grid: " << this->Grid.Width << " x " << this->Grid.Height << "\n";
   os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
   os << indent << "AdaptiveStep: " << this->AdaptiveStep << "\n";

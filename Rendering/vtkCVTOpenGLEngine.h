@@ -26,21 +26,18 @@
 
 #include "cvtEngine.h"          // for cvt::Engine
 #include "cvtRenderingModule.h" // for export macro
-#include "vtkNew.h"             // for ivars
-#include "vtkObject.h"
+#include "vtkCVTGPUEngine.h"
+#include "vtkNew.h" // for ivars
 
 #include <memory> // for unique_ptr
 
-class vtkCVTOpenGLContext;
-class vtkRenderWindow;
-
 class CVTRENDERING_EXPORT vtkCVTOpenGLEngine
-  : public vtkObject
+  : public vtkCVTGPUEngine
   , public cvt::Engine
 {
 public:
   static vtkCVTOpenGLEngine* New();
-  vtkTypeMacro(vtkCVTOpenGLEngine, vtkObject);
+  vtkTypeMacro(vtkCVTOpenGLEngine, vtkCVTGPUEngine);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -91,24 +88,10 @@ public:
   /** Largest distance (pixels) from a site to a pixel labelled with it, last labelling. */
   double GetLastMaximumCellRadius() const { return this->LastMaximumRadius; }
 
-  /** Which OpenGL context the engine runs on (empty before SetDomain). */
-  std::string GetContextDescription() const;
-  /** The engine's own OpenGL context (tests count its live objects). */
-  vtkCVTOpenGLContext* GetContext() const { return this->Context; }
-
-  /**
-   * Run on this render window's OpenGL context instead of one of the engine's own (see
-   * vtkCVTOpenGLContext::SetRenderWindow); nullptr (the default) finds one. A change of context
-   * releases the engine's GL objects, so the domain must be set again.
-   */
-  void SetRenderWindow(vtkRenderWindow* window);
-
-  /** Free every GL object now (also done on destruction). */
-  void ReleaseGraphicsResources();
-
 protected:
   vtkCVTOpenGLEngine();
   ~vtkCVTOpenGLEngine() override;
+  void ReleaseObjects(vtkOpenGLRenderWindow* window) override;
 
 private:
   vtkCVTOpenGLEngine(const vtkCVTOpenGLEngine&) = delete;
@@ -116,7 +99,6 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
-  vtkNew<vtkCVTOpenGLContext> Context;
 
   bool Label(int initialStep);
   bool Reduce();

@@ -101,30 +101,9 @@ vtkCVTSurfaceEngine::~vtkCVTSurfaceEngine()
 }
 
 //------------------------------------------------------------------------------
-void vtkCVTSurfaceEngine::ReleaseGraphicsResources()
+void vtkCVTSurfaceEngine::ReleaseObjects(vtkOpenGLRenderWindow* window)
 {
-  if (this->Context->IsInitialized())
-  {
-    ScopedContext current(this->Context);
-    this->Internal->Release(this->Context->GetRenderWindow());
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkCVTSurfaceEngine::SetRenderWindow(vtkRenderWindow* window)
-{
-  auto* openGLWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (openGLWindow != this->Context->GetHandedInWindow())
-  {
-    this->ReleaseGraphicsResources();
-    this->Context->SetRenderWindow(openGLWindow);
-  }
-}
-
-//------------------------------------------------------------------------------
-std::string vtkCVTSurfaceEngine::GetContextDescription() const
-{
-  return this->Context->GetDescription();
+  this->Internal->Release(window);
 }
 
 //------------------------------------------------------------------------------
@@ -560,7 +539,6 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
 void vtkCVTSurfaceEngine::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Context: " << this->GetContextDescription() << "\n";
   os << indent << "GeometryImage: " << this->GridSize[0] << " x " << this->GridSize[1] << " (wrap "
      << this->Wrap[0] << ", " << this->Wrap[1] << ")\n";
   os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";

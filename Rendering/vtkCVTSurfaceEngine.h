@@ -15,21 +15,18 @@
 
 #include "cvtRenderingModule.h" // for export macro
 #include "cvtSurface.h"         // for cvt::SurfaceEngine
-#include "vtkNew.h"             // for ivars
-#include "vtkObject.h"
+#include "vtkCVTGPUEngine.h"
+#include "vtkNew.h" // for ivars
 
 #include <memory> // for unique_ptr
 
-class vtkCVTOpenGLContext;
-class vtkRenderWindow;
-
 class CVTRENDERING_EXPORT vtkCVTSurfaceEngine
-  : public vtkObject
+  : public vtkCVTGPUEngine
   , public cvt::SurfaceEngine
 {
 public:
   static vtkCVTSurfaceEngine* New();
-  vtkTypeMacro(vtkCVTSurfaceEngine, vtkObject);
+  vtkTypeMacro(vtkCVTSurfaceEngine, vtkCVTGPUEngine);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -50,23 +47,10 @@ public:
   double GetLastLabelMilliseconds() const { return this->LastLabelMilliseconds; }
   double GetLastReductionMilliseconds() const { return this->LastReductionMilliseconds; }
 
-  std::string GetContextDescription() const;
-  /** The engine's own OpenGL context (tests count its live objects). */
-  vtkCVTOpenGLContext* GetContext() const { return this->Context; }
-
-  /**
-   * Run on this render window's OpenGL context instead of one of the engine's own (see
-   * vtkCVTOpenGLContext::SetRenderWindow); nullptr (the default) finds one. A change of context
-   * releases the engine's GL objects, so the geometry image must be set again.
-   */
-  void SetRenderWindow(vtkRenderWindow* window);
-
-  /** Free every GL object now (also done on destruction). */
-  void ReleaseGraphicsResources();
-
 protected:
   vtkCVTSurfaceEngine();
   ~vtkCVTSurfaceEngine() override;
+  void ReleaseObjects(vtkOpenGLRenderWindow* window) override;
 
 private:
   vtkCVTSurfaceEngine(const vtkCVTSurfaceEngine&) = delete;
@@ -74,7 +58,6 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
-  vtkNew<vtkCVTOpenGLContext> Context;
 
   bool CheckGLError(const char* where);
   bool AttachNearestTargets(int width, int height);
