@@ -42,27 +42,32 @@ vtkCVTOpenGLContext::vtkCVTOpenGLContext()
 //------------------------------------------------------------------------------
 vtkCVTOpenGLContext::~vtkCVTOpenGLContext()
 {
-  this->SetRenderWindow(nullptr);
+  this->LetGo();
 }
 
 //------------------------------------------------------------------------------
 void vtkCVTOpenGLContext::SetRenderWindow(vtkOpenGLRenderWindow* window)
 {
-  if (window == this->HandedIn && (this->Window == window || !this->Window))
+  if (window != this->HandedIn)
   {
-    return;
+    this->LetGo();
+    this->HandedIn = window;
+    this->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTOpenGLContext::LetGo()
+{
   if (this->Window && this->Window != this->HandedIn)
   {
-    // Release every GL object of the window while its context is current, then give the
-    // thread its previous context back.
+    // Release every GL object of our own window while its context is current, then give the
+    // thread its previous context back. A handed-in window is its owner's to finalise.
     this->MakeCurrent();
     this->Window->Finalize();
     this->RestorePrevious();
   }
   this->Window = nullptr;
-  this->HandedIn = window;
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------

@@ -83,6 +83,9 @@ private:
   vtkCVTOpenGLContext(const vtkCVTOpenGLContext&) = delete;
   void operator=(const vtkCVTOpenGLContext&) = delete;
 
+  /** Stops using the current window, finalising it if it is our own. */
+  void LetGo();
+
   struct SavedContext;
   std::unique_ptr<SavedContext> Saved;
   vtkSmartPointer<vtkOpenGLRenderWindow> Window;
