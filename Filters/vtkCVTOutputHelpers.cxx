@@ -30,6 +30,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <numeric>
 #include <vector>
 
 namespace cvtvtk
@@ -183,8 +184,8 @@ void RequestAllOfInput(vtkInformation* inputInformation)
 
 namespace
 {
-/// Keeps cells [first, last) of `data` and the points they use (in their first use's order),
-/// with their point and cell data; field data stays.
+/// Keeps cells [first, last) of `data` and the points they use, with their point and cell
+/// data (vtkPolyData::CopyCells); field data stays.
 void KeepCells(vtkPolyData* data, vtkIdType first, vtkIdType last)
 {
   vtkNew<vtkPolyData> kept;
@@ -194,24 +195,10 @@ void KeepCells(vtkPolyData* data, vtkIdType first, vtkIdType last)
   kept->GetPointData()->CopyAllocate(data->GetPointData());
   kept->GetCellData()->CopyAllocate(data->GetCellData());
   kept->AllocateEstimate(last - first, 3);
-  std::vector<vtkIdType> newId(static_cast<size_t>(data->GetNumberOfPoints()), -1);
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = first; c < last; ++c)
-  {
-    data->GetCellPoints(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      vtkIdType& id = newId[static_cast<size_t>(ids->GetId(k))];
-      if (id < 0)
-      {
-        id = points->InsertNextPoint(data->GetPoint(ids->GetId(k)));
-        kept->GetPointData()->CopyData(data->GetPointData(), ids->GetId(k), id);
-      }
-      ids->SetId(k, id);
-    }
-    const vtkIdType cell = kept->InsertNextCell(data->GetCellType(c), ids);
-    kept->GetCellData()->CopyData(data->GetCellData(), c, cell);
-  }
+  vtkNew<vtkIdList> cells;
+  cells->SetNumberOfIds(last - first);
+  std::iota(cells->begin(), cells->end(), first);
+  kept->CopyCells(data, cells);
   kept->GetFieldData()->ShallowCopy(data->GetFieldData());
   data->ShallowCopy(kept);
 }
