@@ -10,6 +10,7 @@
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -644,6 +645,26 @@ TEST(ImageFilterBadInput, OpenGLLostBetweenUpdates)
   filter->SetNumberOfSites(7);
   filter->Update();
   EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 7);
+}
+
+TEST(ImageFilterBadInput, HandedInWindowWithoutAContext)
+{
+  // A render window that has no OpenGL context (a generic window nobody made current): a clear
+  // error and empty outputs; with the window taken back, the filter's own context works.
+  vtkNew<vtkGenericOpenGLRenderWindow> window;
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(16, 16));
+  filter->SetNumberOfSites(4);
+  filter->SetEngineToOpenGL();
+  filter->SetRenderWindow(window);
+  const std::string message = RunExpectingError(filter);
+  EXPECT_TRUE(Contains(message,
+    "the render window handed in (vtkGenericOpenGLRenderWindow) "
+    "has no OpenGL >= 3.2 context"))
+    << message;
+  filter->SetRenderWindow(nullptr);
+  filter->Update();
+  EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 4);
 }
 
 TEST(ImageFilterBadInput, ThenAGoodRunStillWorks)
