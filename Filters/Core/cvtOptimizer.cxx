@@ -346,8 +346,9 @@ bool RunLBFGS(Problem& problem, const SiteState& initial, const OptimizerOptions
     {
       run.Fail();
     }
+    // The frame of the initial sites (before any warm-up), as the mesh driver had it.
     double center[3], scale;
-    problem.SolverFrame(start.Sites, center, scale);
+    problem.SolverFrame(initial.Sites, center, scale);
     Objective objective(run, center, scale);
     Vector x = objective.ToSolver(start.Sites);
     std::vector<double> lower, upper;
