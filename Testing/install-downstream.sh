@@ -25,7 +25,7 @@ done
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 cmake --install "$BUILD" --prefix "$T/prefix" > "$T/install.log"
-expected="bin/cvt lib/libcvtFilters.so lib/libcvtRendering.so lib/libcvtCore.so
+expected="bin/cvt lib/libcvtFilters.so lib/libcvtRendering.so lib/libcvtNumerics.so
   lib/cmake/cvt/CVTConfig.cmake include/cvt/vtkCVTImageFilter.h"
 [ "$PLUGIN" = ON ] && expected="$expected lib/paraview-plugins/CVTPlugin/CVTPlugin.so"
 [ -n "$PYDEST" ] && expected="$expected $PYDEST/cvt/__init__.py $PYDEST/cvt/cvtFilters.so"

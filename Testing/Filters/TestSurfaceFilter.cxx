@@ -1,12 +1,8 @@
-// Surfaces through geometry images: area weights, the GPU surface engine against CPU labels and
-// sums, the constrained CVT on a torus, remeshing of a torus and a sphere, bad input.
+// The surface filters: geometry images (area weights, meshes parameterised and resampled), the
+// constrained CVT on a torus, remeshing of a torus and a sphere, both engines, bad input.
 #include "cvtSurface.h"
 #include "vtkCVTGeometryImageSource.h"
-#include "vtkCVTImageFilter.h"
 #include "vtkCVTMeshGeometryImage.h"
-#include "vtkCVTOpenGLContext.h"
-#include "vtkCVTOpenGLEngine.h"
-#include "vtkCVTSurfaceEngine.h"
 #include "vtkCVTSurfaceFilter.h"
 
 #include "vtkCallbackCommand.h"
@@ -19,19 +15,16 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkParametricEllipsoid.h"
 #include "vtkParametricTorus.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkRenderWindow.h"
 #include "vtkSphereSource.h"
 #include "vtkTable.h"
 #include "vtkTriangle.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtk_glew.h"
 
 #include <gtest/gtest.h>
 
@@ -39,7 +32,6 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <random>
 #include <set>
 
 namespace
@@ -50,14 +42,6 @@ vtkSmartPointer<vtkImageData> Torus(int w, int h)
   source->SetResolution(w, h);
   source->Update();
   return source->GetOutput();
-}
-
-cvt::GeometryImage ToGeometryImage(vtkImageData* image)
-{
-  cvt::GeometryImage gi;
-  std::string error;
-  EXPECT_TRUE(vtkCVTSurfaceFilter::ReadGeometryImage(image, gi, error)) << error;
-  return gi;
 }
 
 class ErrorCatcher : public vtkCommand
@@ -123,104 +107,6 @@ TEST(GeometryImage, TorusAreaWeightsSumToTheArea)
   const double ratio = image->GetFieldData()->GetArray("MinimumAreaWeight")->GetTuple1(0) /
     image->GetFieldData()->GetArray("MaximumAreaWeight")->GetTuple1(0);
   EXPECT_NEAR(ratio, 0.6 / 1.4, 0.01);
-}
-
-TEST(SurfaceEngine, LabelsAndSumsMatchTheCpu)
-{
-  // Enough sites that Euclidean cells stay small against the tube radius (few large cells
-  // reach across the hole: Euclidean Voronoi regions disconnected on the surface).
-  const cvt::GeometryImage gi = ToGeometryImage(Torus(128, 64));
-  std::vector<long long> pixels;
-  const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 200, 3, pixels);
-  vtkNew<vtkCVTSurfaceEngine> engine;
-  ASSERT_TRUE(engine->SetGeometryImage(gi)) << engine->GetLastError();
-  ASSERT_TRUE(engine->SetSites(sites, pixels)) << engine->GetLastError();
-  cvt::CellSums sums;
-  ASSERT_TRUE(engine->ComputeCellSums(sums)) << engine->GetLastError();
-  std::vector<int> labels;
-  ASSERT_TRUE(engine->GetLabels(labels));
-
-  // Brute force: the nearest site in 3D of every pixel; and the weighted sums over the GPU's
-  // labels (so that the reduction is checked on its own).
-  cvt::CellSums cpu;
-  cpu.Resize(200, true);
-  int wrong = 0;
-  const auto distance2 = [&](long long p, int s)
-  {
-    double d2 = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      d2 += std::pow(gi.Position[3 * p + c] - sites[3 * s + c], 2);
-    }
-    return d2;
-  };
-  for (long long p = 0; p < gi.NumberOfPixels(); ++p)
-  {
-    double best = std::numeric_limits<double>::infinity();
-    for (int s = 0; s < 200; ++s)
-    {
-      best = std::min(best, distance2(p, s));
-    }
-    const int label = labels[p];
-    ASSERT_GE(label, 0);
-    wrong += distance2(p, label) > best * (1.0 + 1e-5) ? 1 : 0;
-    const double w = gi.AreaWeight[p];
-    const double d[3] = { gi.Position[3 * p] - sites[3 * label],
-      gi.Position[3 * p + 1] - sites[3 * label + 1],
-      gi.Position[3 * p + 2] - sites[3 * label + 2] };
-    cpu.Mass[label] += w;
-    cpu.MomentX[label] += w * d[0];
-    cpu.MomentY[label] += w * d[1];
-    cpu.MomentZ[label] += w * d[2];
-    cpu.Energy[label] += w * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  }
-  std::cout << "[ measured ] surface 1+JFA: " << wrong << " of " << gi.NumberOfPixels()
-            << " pixels mislabelled\n";
-  EXPECT_LE(wrong, gi.NumberOfPixels() / 200); // under 0.5%
-  for (int s = 0; s < 200; ++s)
-  {
-    EXPECT_NEAR(sums.Mass[s], cpu.Mass[s], 1e-4 * cpu.Mass[s] + 1e-9);
-    EXPECT_NEAR(sums.MomentZ[s], cpu.MomentZ[s], 1e-4 * cpu.Mass[s] + 1e-9);
-    EXPECT_NEAR(sums.Energy[s], cpu.Energy[s], 1e-4 * cpu.Energy[s] + 1e-9);
-  }
-}
-
-TEST(SurfaceEngine, ConstrainedCentroidsMatchTheCpu)
-{
-  const cvt::GeometryImage gi = ToGeometryImage(Torus(128, 64));
-  std::vector<long long> pixels;
-  const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 150, 8, pixels);
-  vtkNew<vtkCVTSurfaceEngine> engine;
-  ASSERT_TRUE(engine->SetGeometryImage(gi));
-  ASSERT_TRUE(engine->SetSites(sites, pixels));
-  cvt::CellSums sums;
-  ASSERT_TRUE(engine->ComputeCellSums(sums));
-  std::vector<int> labels;
-  ASSERT_TRUE(engine->GetLabels(labels));
-  // Targets: the cells' 3D centroids, off the surface.
-  std::vector<double> centroids = sites;
-  for (size_t i = 0; i < 150; ++i)
-  {
-    centroids[3 * i] += sums.MomentX[i] / sums.Mass[i];
-    centroids[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
-    centroids[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
-  }
-  std::vector<double> gpuSites = sites, cpuSites = sites;
-  std::vector<long long> gpuPixels = pixels, cpuPixels = pixels;
-  ASSERT_TRUE(engine->NearestPointsInCells(centroids, gpuSites, gpuPixels))
-    << engine->GetLastError();
-  cvt::NearestPointsInCells(gi, labels, centroids, cpuSites, cpuPixels);
-  int samePixel = 0;
-  for (size_t i = 0; i < 150; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      // float on the GPU, double on the CPU: near-ties between triangles may pick either
-      EXPECT_NEAR(gpuSites[3 * i + c], cpuSites[3 * i + c], 1e-3) << "site " << i;
-    }
-    samePixel += gpuPixels[i] == cpuPixels[i] ? 1 : 0;
-  }
-  EXPECT_GE(samePixel, 145);
 }
 
 TEST(SurfaceFilter, TorusWith600SitesAndItsRemesh)
@@ -685,237 +571,4 @@ TEST(SurfaceFilter, CPUAndOpenGLEnginesAgreeOnTheTorus)
     energy[engine == vtkCVTSurfaceFilter::CPU] = DenseTorusEnergy(sites);
   }
   EXPECT_NEAR(energy[1], energy[0], 0.01 * energy[0]);
-}
-
-namespace
-{
-/// Live OpenGL objects of a context: the names up to 4096 that are textures, framebuffers,
-/// renderbuffers, buffers, vertex arrays, programs or shaders (names are small integers,
-/// handed out from 1; a leak of one per update passes 4096 in a soak).
-int LiveGLObjects(vtkCVTOpenGLContext* context)
-{
-  context->MakeCurrent();
-  int live = 0;
-  for (GLuint name = 1; name <= 4096; ++name)
-  {
-    live += (glIsTexture(name) ? 1 : 0) + (glIsFramebuffer(name) ? 1 : 0) +
-      (glIsRenderbuffer(name) ? 1 : 0) + (glIsBuffer(name) ? 1 : 0) +
-      (glIsVertexArray(name) ? 1 : 0) + (glIsProgram(name) ? 1 : 0) + (glIsShader(name) ? 1 : 0);
-  }
-  context->RestorePrevious();
-  return live;
-}
-} // namespace
-
-// Engines kept across updates (as the filters will, issue 8) must not pile up GL objects: after
-// a warm-up, 200 rounds of new site counts, evaluations, Lloyd steps, nearest points and a new
-// domain every 50 rounds leave the same number of live objects.
-TEST(GLObjects, EnginesStopGrowing)
-{
-  std::mt19937 random(5);
-  vtkNew<vtkCVTOpenGLEngine> flat;
-  cvt::Grid grid;
-  grid.Width = grid.Height = 64;
-  const std::vector<float> density(64 * 64, 1.0f);
-  const cvt::GeometryImage gi = ToGeometryImage(Torus(64, 32));
-  vtkNew<vtkCVTSurfaceEngine> surface;
-  int warm[2] = { 0, 0 };
-  for (int round = 0; round < 250; ++round)
-  {
-    const int n = 20 + static_cast<int>(random() % 7);
-    if (round % 50 == 0)
-    {
-      ASSERT_TRUE(flat->SetDomain(grid, density)) << flat->GetLastError();
-      ASSERT_TRUE(surface->SetGeometryImage(gi)) << surface->GetLastError();
-    }
-    std::vector<double> sites(2 * static_cast<size_t>(n));
-    for (double& c : sites)
-    {
-      c = std::uniform_real_distribution<double>(0.5, 63.5)(random);
-    }
-    cvt::CellSums sums;
-    ASSERT_TRUE(
-      flat->SetSites(sites) && flat->ComputeCellSums(sums) && flat->MoveSitesToCentroids())
-      << flat->GetLastError();
-    std::vector<long long> pixels;
-    std::vector<double> onSurface = cvt::SampleSurfaceSites(gi, n, round, pixels);
-    ASSERT_TRUE(surface->SetSites(onSurface, pixels) && surface->ComputeCellSums(sums))
-      << surface->GetLastError();
-    std::vector<double> nearest = onSurface;
-    ASSERT_TRUE(surface->NearestPointsInCells(onSurface, nearest, pixels))
-      << surface->GetLastError();
-    if (round == 49)
-    {
-      warm[0] = LiveGLObjects(flat->GetContext());
-      warm[1] = LiveGLObjects(surface->GetContext());
-    }
-  }
-  const int after[2] = { LiveGLObjects(flat->GetContext()), LiveGLObjects(surface->GetContext()) };
-  std::cout << "[ measured ] live GL objects after warm-up / after 200 more rounds: 2D engine "
-            << warm[0] << " / " << after[0] << ", surface engine " << warm[1] << " / " << after[1]
-            << "\n";
-  EXPECT_GT(warm[0], 5);
-  EXPECT_GT(warm[1], 5);
-  EXPECT_EQ(after[0], warm[0]) << "the 2D engine leaks GL objects";
-  EXPECT_EQ(after[1], warm[1]) << "the surface engine leaks GL objects";
-  flat->ReleaseGraphicsResources();
-  surface->ReleaseGraphicsResources();
-  std::cout << "[ measured ] after ReleaseGraphicsResources: " << LiveGLObjects(flat->GetContext())
-            << " and " << LiveGLObjects(surface->GetContext()) << "\n";
-}
-
-// Texture storage follows sizes, not calls: once a domain and a site count are set, moving the
-// sites (every L-BFGS evaluation), evaluating, Lloyd steps, nearest points and setting the same
-// domain again give no texture new storage; a new site count or domain size does.
-TEST(GLObjects, StorageFollowsSizes)
-{
-  cvt::Grid grid;
-  grid.Width = grid.Height = 64;
-  const std::vector<float> density(64 * 64, 1.0f);
-  const cvt::GeometryImage gi = ToGeometryImage(Torus(64, 32));
-  vtkNew<vtkCVTOpenGLEngine> flat;
-  vtkNew<vtkCVTSurfaceEngine> surface;
-  std::mt19937 random(3);
-  const auto planeSites = [&random](int n)
-  {
-    std::vector<double> sites(2 * static_cast<size_t>(n));
-    for (double& c : sites)
-    {
-      c = std::uniform_real_distribution<double>(0.5, 63.5)(random);
-    }
-    return sites;
-  };
-  cvt::CellSums sums;
-  std::vector<long long> pixels;
-  std::vector<double> onSurface = cvt::SampleSurfaceSites(gi, 30, 1, pixels);
-  ASSERT_TRUE(flat->SetDomain(grid, density) && flat->SetSites(planeSites(30)) &&
-    flat->ComputeCellSums(sums) && flat->MoveSitesToCentroids())
-    << flat->GetLastError();
-  ASSERT_TRUE(surface->SetGeometryImage(gi) && surface->SetSites(onSurface, pixels) &&
-    surface->ComputeCellSums(sums) && surface->NearestPointsInCells(onSurface, onSurface, pixels))
-    << surface->GetLastError();
-  const long long settled = vtkCVTOpenGLContext::GetNumberOfTextureAllocations();
-  for (int round = 0; round < 10; ++round)
-  {
-    ASSERT_TRUE(flat->SetSites(planeSites(30)) && flat->ComputeCellSums(sums) &&
-      flat->MoveSitesToCentroids() && flat->ComputeCellSums(sums));
-    onSurface = cvt::SampleSurfaceSites(gi, 30, 2 + round, pixels);
-    std::vector<double> nearest = onSurface;
-    ASSERT_TRUE(surface->SetSites(onSurface, pixels) && surface->ComputeCellSums(sums) &&
-      surface->NearestPointsInCells(onSurface, nearest, pixels));
-  }
-  ASSERT_TRUE(flat->SetDomain(grid, density) && flat->SetSites(planeSites(30)));
-  EXPECT_EQ(vtkCVTOpenGLContext::GetNumberOfTextureAllocations(), settled)
-    << "moving sites or setting the same domain gave textures new storage";
-  ASSERT_TRUE(flat->SetSites(planeSites(200)) && flat->ComputeCellSums(sums));
-  EXPECT_GT(vtkCVTOpenGLContext::GetNumberOfTextureAllocations(), settled)
-    << "a new site count kept the old slot textures";
-}
-
-namespace
-{
-/// A uniform 96 x 96 image for the image filter.
-vtkSmartPointer<vtkImageData> FlatImage()
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(96, 96, 1);
-  vtkNew<vtkFloatArray> density;
-  density->SetName("density");
-  density->SetNumberOfTuples(96 * 96);
-  density->Fill(1.0);
-  image->GetPointData()->AddArray(density);
-  return image;
-}
-}
-
-// Filters keep their OpenGL engine across updates: a second update with a new seed gives no
-// texture new storage (a new engine would make all of them again), a new site count only the
-// slot textures; both filters on the OpenGL engine.
-TEST(GLObjects, FiltersKeepTheirEngineAcrossUpdates)
-{
-  vtkNew<vtkCVTImageFilter> flat;
-  flat->SetInputData(FlatImage());
-  flat->SetEngineToOpenGL();
-  flat->SetNumberOfSites(50);
-  flat->SetMaximumNumberOfIterations(3);
-  vtkNew<vtkCVTSurfaceFilter> surface;
-  surface->SetInputData(Torus(128, 64));
-  surface->SetEngine(vtkCVTSurfaceFilter::OPENGL);
-  surface->SetNumberOfSites(50);
-  surface->SetMaximumNumberOfIterations(3);
-  flat->Update();
-  surface->Update();
-  ASSERT_EQ(flat->GetSitesOutput()->GetNumberOfPoints(), 50);
-  ASSERT_EQ(surface->GetSitesOutput()->GetNumberOfPoints(), 50);
-  const long long first = vtkCVTOpenGLContext::GetNumberOfTextureAllocations();
-  flat->SetRandomSeed(7);
-  surface->SetRandomSeed(7);
-  flat->Update();
-  surface->Update();
-  EXPECT_EQ(vtkCVTOpenGLContext::GetNumberOfTextureAllocations(), first)
-    << "an update with a new seed made textures again";
-  flat->SetNumberOfSites(300);
-  flat->Update();
-  const long long added = vtkCVTOpenGLContext::GetNumberOfTextureAllocations() - first;
-  EXPECT_GT(added, 0);
-  EXPECT_LE(added, 4) << "a new site count should only resize the four slot textures";
-  EXPECT_EQ(flat->GetSitesOutput()->GetNumberOfPoints(), 300);
-}
-
-// Engines and filters made and destroyed in a loop on one handed-in render window: after the
-// first round (which fills the window's shader cache), its live GL objects return to the same
-// count after every round, and the filters' results match those on a context of their own.
-TEST(GLObjects, FiltersOnAHandedInWindowLeaveNothingBehind)
-{
-  vtkNew<vtkCVTOpenGLContext> holder;
-  ASSERT_TRUE(holder->Initialize()) << holder->GetLastError();
-  vtkRenderWindow* window = holder->GetRenderWindow();
-  vtkSmartPointer<vtkImageData> image = FlatImage();
-  vtkSmartPointer<vtkImageData> torus = Torus(128, 64);
-  const auto run = [&](vtkRenderWindow* context, double energies[2])
-  {
-    vtkNew<vtkCVTImageFilter> flat;
-    flat->SetInputData(image);
-    flat->SetEngineToOpenGL();
-    flat->SetNumberOfSites(40);
-    flat->SetMaximumNumberOfIterations(4);
-    flat->SetRenderWindow(context);
-    flat->Update();
-    vtkNew<vtkCVTSurfaceFilter> surface;
-    surface->SetInputData(torus);
-    surface->SetEngine(vtkCVTSurfaceFilter::OPENGL);
-    surface->SetNumberOfSites(40);
-    surface->SetMaximumNumberOfIterations(4);
-    surface->SetRenderWindow(context);
-    surface->Update();
-    energies[0] = flat->GetSitesOutput()->GetFieldData()->GetArray("Energy")->GetTuple1(0);
-    energies[1] = surface->GetSitesOutput()->GetFieldData()->GetArray("Energy")->GetTuple1(0);
-    if (context)
-    {
-      EXPECT_EQ(flat->GetContextDescription().rfind("handed-in", 0), 0u)
-        << flat->GetContextDescription();
-      EXPECT_EQ(surface->GetContextDescription().rfind("handed-in", 0), 0u);
-    }
-  };
-  double own[2], handedIn[2];
-  run(nullptr, own);
-  run(window, handedIn);
-  EXPECT_NEAR(handedIn[0], own[0], 1e-6 * own[0]);
-  EXPECT_NEAR(handedIn[1], own[1], 1e-6 * own[1]);
-  const int start = LiveGLObjects(holder);
-  for (int round = 0; round < 5; ++round)
-  {
-    run(window, handedIn);
-    {
-      vtkNew<vtkCVTOpenGLEngine> engine;
-      engine->SetRenderWindow(window);
-      cvt::Grid grid;
-      grid.Width = grid.Height = 32;
-      ASSERT_TRUE(engine->SetDomain(grid, std::vector<float>(32 * 32, 1.0f)));
-      EXPECT_GT(LiveGLObjects(holder), start);
-    }
-    EXPECT_EQ(LiveGLObjects(holder), start) << "round " << round;
-  }
-  std::cout << "[ measured ] live GL objects of the handed-in window: " << start << " before, "
-            << LiveGLObjects(holder) << " after 5 rounds of two filters and an engine\n";
 }

@@ -6,7 +6,7 @@
 #ifndef cvtOptimizer_h
 #define cvtOptimizer_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"     // for CellSums, EngineErrors
 
 #include <functional>
@@ -65,7 +65,7 @@ using ProgressCallback = std::function<bool(double fraction)>;
 
 /// What the drivers need of a CVT problem. Every method that can fail returns false and leaves a
 /// message in GetLastError().
-class CVTCORE_EXPORT Problem : public EngineErrors
+class CVTNUMERICS_EXPORT Problem : public EngineErrors
 {
 public:
   virtual ~Problem() = default;
@@ -107,7 +107,7 @@ protected:
 /// Lloyd's method from `initial`. Returns false (message in `error`) only when the problem
 /// fails. The result holds the sites of lowest energy seen, and the problem is left labelled
 /// for them.
-CVTCORE_EXPORT bool RunLloyd(Problem& problem, const SiteState& initial,
+CVTNUMERICS_EXPORT bool RunLloyd(Problem& problem, const SiteState& initial,
   const OptimizerOptions& options, const ProgressCallback& progress, OptimizerResult& result,
   std::string& error);
 
@@ -116,7 +116,7 @@ CVTCORE_EXPORT bool RunLloyd(Problem& problem, const SiteState& initial,
 /// iteration cap, at options.GradientTolerance, when the relative energy decrease falls below
 /// options.Tolerance, on abort, or when no sufficient decrease is possible (the reason is in
 /// StopReason). Result and return value as RunLloyd.
-CVTCORE_EXPORT bool RunLBFGS(Problem& problem, const SiteState& initial,
+CVTNUMERICS_EXPORT bool RunLBFGS(Problem& problem, const SiteState& initial,
   const OptimizerOptions& options, const ProgressCallback& progress, OptimizerResult& result,
   std::string& error);
 

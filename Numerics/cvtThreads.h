@@ -1,4 +1,4 @@
-// Private to CVT::Core: the CPU engines run their loops with vtkSMPTools. ParaView's VTK
+// Private to CVT::Numerics: the CPU engines run their loops with vtkSMPTools. ParaView's VTK
 // defaults to the Sequential backend although it ships STDThread; use the threads unless the
 // user chose a backend (VTK_SMP_BACKEND_IN_USE).
 #ifndef cvtThreads_h

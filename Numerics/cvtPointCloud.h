@@ -1,4 +1,4 @@
-// Private to CVT::Core: nanoflann's view of a flat point array (x, y[, z] per point) and the
+// Private to CVT::Numerics: nanoflann's view of a flat point array (x, y[, z] per point) and the
 // k-d tree over it, shared by the engines' nearest-site searches.
 #ifndef cvtPointCloud_h
 #define cvtPointCloud_h

@@ -5,7 +5,7 @@
 #ifndef cvtProblems_h
 #define cvtProblems_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
 #include "cvtOptimizer.h"
 #include "cvtRestrictedVoronoi.h"
@@ -16,7 +16,7 @@ namespace cvt
 
 /// Sites in the plane of a grid. The engine may keep the sites on its device between Lloyd
 /// steps. L-BFGS-B keeps them in the domain grown by 1%; the result is clamped into it.
-class CVTCORE_EXPORT PlaneProblem : public Problem
+class CVTNUMERICS_EXPORT PlaneProblem : public Problem
 {
 public:
   PlaneProblem(Engine& engine, const Grid& grid);
@@ -39,7 +39,7 @@ private:
 /// Sites on the surface of a geometry image, each held by a pixel. Lloyd moves every site to
 /// the point of its cell nearest to the cell's 3D centroid; an L-BFGS step moves it to the point
 /// of its cell nearest to the solver's target; gradients are tangential.
-class CVTCORE_EXPORT GeometryImageProblem : public Problem
+class CVTNUMERICS_EXPORT GeometryImageProblem : public Problem
 {
 public:
   GeometryImageProblem(SurfaceEngine& engine, const GeometryImage& image);
@@ -60,7 +60,7 @@ private:
 };
 
 /// Sites free in space whose cells are restricted to a mesh; they converge onto the surface.
-class CVTCORE_EXPORT RestrictedProblem : public Problem
+class CVTNUMERICS_EXPORT RestrictedProblem : public Problem
 {
 public:
   explicit RestrictedProblem(RestrictedVoronoi& engine);

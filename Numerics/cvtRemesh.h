@@ -4,7 +4,7 @@
 #ifndef cvtRemesh_h
 #define cvtRemesh_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtRestrictedVoronoi.h"
 
 #include <array>
@@ -38,7 +38,7 @@ struct Remesh
 /// widens thin triangles, or brings valences closer to 6 without a corner under 30 degrees.
 /// Given the input `surface`, free vertices of triangles with a corner under 30 degrees are then
 /// moved along it where that widens them.
-CVTCORE_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
+CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 
 } // namespace cvt

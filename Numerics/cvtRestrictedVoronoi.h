@@ -7,7 +7,7 @@
 #ifndef cvtRestrictedVoronoi_h
 #define cvtRestrictedVoronoi_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"     // for CellSums, EngineErrors
 #include "cvtSurfaceMesh.h"
 
@@ -43,7 +43,7 @@ struct RestrictedDual
   std::vector<double> BoundaryBarycentric;
 };
 
-class CVTCORE_EXPORT RestrictedVoronoi : public EngineErrors
+class CVTNUMERICS_EXPORT RestrictedVoronoi : public EngineErrors
 {
 public:
   RestrictedVoronoi();

@@ -5,7 +5,7 @@
 #ifndef cvtSurfaceMesh_h
 #define cvtSurfaceMesh_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 
 #include <array>
 #include <cstdint>
@@ -48,17 +48,17 @@ struct MeshRepairReport
 /// edge's points) and points (one copy per fan of triangles), orients every connected component
 /// consistently (closed ones outwards). Returns "" or what makes the mesh unusable: a
 /// non-orientable component (with where), no triangle left.
-CVTCORE_EXPORT std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report);
+CVTNUMERICS_EXPORT std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report);
 
 /// Makes an edge-manifold triangle list vertex-manifold: a point whose triangles form several
 /// fans (sheets meeting only there) gets a copy for each fan beyond its first, numbered from
 /// `numberOfPoints` on. Returns, for each copy in order, the point it copies.
-CVTCORE_EXPORT std::vector<int> SplitPinchedPoints(
+CVTNUMERICS_EXPORT std::vector<int> SplitPinchedPoints(
   int numberOfPoints, std::vector<std::array<int, 3>>& triangles);
 
 /// Checks coordinates and density: "" or what is wrong (NaN, infinite or beyond 1e30
 /// coordinates, NaN, infinite, negative or all-zero density, wrong density size).
-CVTCORE_EXPORT std::string CheckSurfaceMesh(const SurfaceMesh& mesh);
+CVTNUMERICS_EXPORT std::string CheckSurfaceMesh(const SurfaceMesh& mesh);
 
 struct MeshTopology
 {
@@ -74,20 +74,20 @@ struct MeshTopology
 
 /// Splits directed edges (a, b) that form closed chains into simple loops of points: at a point
 /// where chains meet (a pinch), each loop is cut off when the path comes back to it.
-CVTCORE_EXPORT std::vector<std::vector<int>> TraceLoops(
+CVTNUMERICS_EXPORT std::vector<std::vector<int>> TraceLoops(
   const std::vector<std::pair<int, int>>& edges);
 
 /// Topology of an edge-manifold, consistently oriented mesh (after RepairSurfaceMesh).
-CVTCORE_EXPORT MeshTopology ComputeMeshTopology(
+CVTNUMERICS_EXPORT MeshTopology ComputeMeshTopology(
   int numberOfPoints, const std::vector<std::array<int, 3>>& triangles);
 
 /// Total area, and each triangle's area times its mean density (the sampling weight).
-CVTCORE_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
+CVTNUMERICS_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
 
 /// `count` points on the surface, drawn with probability proportional to area times density.
 /// With the mesh's topology, every component first gets the few sites its topology needs in a
 /// remesh (4 for genus 0, 8 + 16 g for genus g), when `count` allows, so small parts survive.
-CVTCORE_EXPORT std::vector<double> SampleMeshSites(
+CVTNUMERICS_EXPORT std::vector<double> SampleMeshSites(
   const SurfaceMesh& mesh, int count, std::uint64_t seed, const MeshTopology* topology = nullptr);
 
 } // namespace cvt

@@ -5,7 +5,7 @@
 #ifndef cvtSurface_h
 #define cvtSurface_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
 
 #include <array>
@@ -35,41 +35,41 @@ struct GeometryImage
 
 /// One third of the areas of the triangles of the regular triangulation incident to each pixel
 /// (each quad split along its (i, j)-(i+1, j+1) diagonal; masked pixels take no part).
-CVTCORE_EXPORT std::vector<float> ComputeAreaWeights(const GeometryImage& image);
+CVTNUMERICS_EXPORT std::vector<float> ComputeAreaWeights(const GeometryImage& image);
 
 /// Checks positions, normals, weights and mask; empty string when fine, else what is wrong.
-CVTCORE_EXPORT std::string CheckGeometryImage(const GeometryImage& image, int numberOfSites);
+CVTNUMERICS_EXPORT std::string CheckGeometryImage(const GeometryImage& image, int numberOfSites);
 
 /// Sites at pixel positions, drawn with probability proportional to the area weights.
-CVTCORE_EXPORT std::vector<double> SampleSurfaceSites(
+CVTNUMERICS_EXPORT std::vector<double> SampleSurfaceSites(
   const GeometryImage& image, int count, std::uint64_t seed, std::vector<long long>& pixels);
 
 /// For every site i, the nearest point to targets[i] on the triangles of the pixels labelled i
 /// (Rong 4.3: each pixel checks the two triangles of its quad; the minimum over the cell wins),
 /// with the pixel nearest to it. Sites whose cell is empty keep `sites[i]` and `pixels[i]`.
-CVTCORE_EXPORT void NearestPointsInCells(const GeometryImage& image, const std::vector<int>& labels,
+CVTNUMERICS_EXPORT void NearestPointsInCells(const GeometryImage& image, const std::vector<int>& labels,
   const std::vector<double>& targets, std::vector<double>& sites, std::vector<long long>& pixels);
 
 /// The dual triangulation of a labelling: one triangle per pixel corner where three cells
 /// meet (two where four meet, split along the shorter diagonal), oriented like the image,
 /// without duplicates.
-CVTCORE_EXPORT std::vector<std::array<int, 3>> DualTriangles(
+CVTNUMERICS_EXPORT std::vector<std::array<int, 3>> DualTriangles(
   const GeometryImage& image, const std::vector<int>& labels, const std::vector<double>& sites);
 
 /// The geometry image as a triangle mesh, every `stride`-th pixel a point (the last row and
 /// column kept where borders are not identified), each quad split along its (i, j)-(i+1, j+1)
 /// diagonal as the image's own triangulation, identified borders joined, masked pixels left
 /// out. Points repeated by the image (a sphere's poles) are left for the caller to merge.
-CVTCORE_EXPORT void GeometryImageMesh(const GeometryImage& image, int stride,
+CVTNUMERICS_EXPORT void GeometryImageMesh(const GeometryImage& image, int stride,
   std::vector<double>& points, std::vector<std::array<int, 3>>& triangles);
 
 /// The nearest site (3D distance, k-d tree, in parallel) of every valid pixel; -1 elsewhere.
-CVTCORE_EXPORT std::vector<int> NearestSiteLabels(
+CVTNUMERICS_EXPORT std::vector<int> NearestSiteLabels(
   const GeometryImage& image, const std::vector<double>& sites);
 
 /// What a surface engine must do: the 3D counterpart of cvt::Engine. Sites are flat
 /// (x, y, z, ...) points on the surface, each with the pixel that holds it.
-class CVTCORE_EXPORT SurfaceEngine : public EngineErrors
+class CVTNUMERICS_EXPORT SurfaceEngine : public EngineErrors
 {
 public:
   virtual ~SurfaceEngine() = default;

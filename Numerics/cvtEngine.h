@@ -3,7 +3,7 @@
 #ifndef cvtEngine_h
 #define cvtEngine_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 
 #include <cmath>
 #include <string>
@@ -86,7 +86,7 @@ struct CellSums
 };
 
 /// The error reporting shared by the engines: methods return false and leave a message.
-class CVTCORE_EXPORT EngineErrors
+class CVTNUMERICS_EXPORT EngineErrors
 {
 public:
   const std::string& GetLastError() const { return this->LastError; }
@@ -103,7 +103,7 @@ protected:
 /// What an engine must do for the optimisers. Sites are flat (x0, y0, x1, y1, ...) physical
 /// coordinates inside the grid's domain. Every method returns false on failure and leaves a
 /// message in GetLastError().
-class CVTCORE_EXPORT Engine : public EngineErrors
+class CVTNUMERICS_EXPORT Engine : public EngineErrors
 {
 public:
   virtual ~Engine() = default;

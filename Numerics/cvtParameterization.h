@@ -4,7 +4,7 @@
 #ifndef cvtParameterization_h
 #define cvtParameterization_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtSurface.h"
 
 #include <array>
@@ -25,20 +25,20 @@ struct TriangleMesh
 /// either a disk (one boundary loop, Euler characteristic 1) or a closed genus-0 surface (no
 /// boundary, Euler characteristic 2; `closed` is then set). Empty string when fine, else what
 /// is wrong and what the parameterisation needs.
-CVTCORE_EXPORT std::string CheckMesh(const TriangleMesh& mesh, bool& closed);
+CVTNUMERICS_EXPORT std::string CheckMesh(const TriangleMesh& mesh, bool& closed);
 
 /// (u, v) in [0, 1]^2 per vertex: mean-value coordinates, boundary on the square. The mesh
 /// must pass CheckMesh as a disk. Returns false with a message when the solve fails.
-CVTCORE_EXPORT bool ParameterizeDisk(
+CVTNUMERICS_EXPORT bool ParameterizeDisk(
   const TriangleMesh& mesh, std::vector<double>& uv, std::string& error);
 
 /// Samples the parameterised mesh at the pixel centres of a W x H grid: positions by
 /// barycentric interpolation, normals, area weights, mask (pixels no triangle covers).
-CVTCORE_EXPORT GeometryImage ResampleMesh(
+CVTNUMERICS_EXPORT GeometryImage ResampleMesh(
   const TriangleMesh& mesh, const std::vector<double>& uv, int width, int height);
 
 /// Unit normals of a geometry image from central differences of its positions (wrap-aware).
-CVTCORE_EXPORT std::vector<float> NormalsFromPositions(const GeometryImage& image);
+CVTNUMERICS_EXPORT std::vector<float> NormalsFromPositions(const GeometryImage& image);
 
 } // namespace cvt
 

@@ -1,4 +1,4 @@
-// Private to CVT::Core: the edges of a triangle list and the triangles on each, found by
+// Private to CVT::Numerics: the edges of a triangle list and the triangles on each, found by
 // sorting (triangle, edge) uses by their end points, which is much faster to build than a hash
 // map of vectors. Mesh repairs, topology and the restricted Voronoi engine read it.
 #ifndef cvtEdgeTable_h

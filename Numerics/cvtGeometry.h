@@ -1,4 +1,4 @@
-// Private to CVT::Core: small 3D vector helpers on plain double[3] arrays, shared by the
+// Private to CVT::Numerics: small 3D vector helpers on plain double[3] arrays, shared by the
 // restricted Voronoi diagram, the geometry-image code and the remesh.
 #ifndef cvtGeometry_h
 #define cvtGeometry_h

@@ -5,14 +5,14 @@
 #ifndef cvtExactEngine_h
 #define cvtExactEngine_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
 #include "cvtExactVoronoi.h" // for DensityTables
 
 namespace cvt
 {
 
-class CVTCORE_EXPORT ExactEngine : public Engine
+class CVTNUMERICS_EXPORT ExactEngine : public Engine
 {
 public:
   ExactEngine();

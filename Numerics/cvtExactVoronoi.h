@@ -4,7 +4,7 @@
 #ifndef cvtExactVoronoi_h
 #define cvtExactVoronoi_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
 
 #include <vector>
@@ -27,21 +27,21 @@ struct PolygonIntegrals
   double SecondMoment = 0.0;           // integral of |x - c|^2
 };
 
-CVTCORE_EXPORT PolygonIntegrals IntegratePolygon(const Polygon& polygon, double cx, double cy);
+CVTNUMERICS_EXPORT PolygonIntegrals IntegratePolygon(const Polygon& polygon, double cx, double cy);
 /// The same for n vertices given as coordinate arrays.
-CVTCORE_EXPORT PolygonIntegrals IntegrateVertices(
+CVTNUMERICS_EXPORT PolygonIntegrals IntegrateVertices(
   const double* x, const double* y, size_t n, double cx, double cy);
 
 /// Keeps the part of `polygon` where a x + b y <= c.
-CVTCORE_EXPORT Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c);
+CVTNUMERICS_EXPORT Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c);
 
 /// The Voronoi cells of all sites (flat x, y) clipped to the grid's domain, one polygon each.
-CVTCORE_EXPORT std::vector<Polygon> ClippedVoronoiCells(
+CVTNUMERICS_EXPORT std::vector<Polygon> ClippedVoronoiCells(
   const Grid& grid, const std::vector<double>& sites);
 
 /// Row prefix sums of rho, rho x, rho y and rho |x|^2 over pixel centres (relative to the
 /// grid's origin): the pixels wholly inside a cell cost O(rows) instead of O(pixels).
-struct CVTCORE_EXPORT DensityTables
+struct CVTNUMERICS_EXPORT DensityTables
 {
   DensityTables() = default;
   DensityTables(const Grid& grid, const std::vector<float>& density);
@@ -52,18 +52,18 @@ struct CVTCORE_EXPORT DensityTables
 /// Exact per-cell integrals, in parallel over the cells (vtkSMPTools). An empty density means
 /// uniform density 1; otherwise the density is constant over each pixel (row-major, one value
 /// per pixel).
-CVTCORE_EXPORT CellSums ExactCellSums(
+CVTNUMERICS_EXPORT CellSums ExactCellSums(
   const Grid& grid, const std::vector<double>& sites, const std::vector<float>& density);
 /// The same with the density's tables made once (the exact engine keeps them).
-CVTCORE_EXPORT CellSums ExactCellSums(const Grid& grid, const std::vector<double>& sites,
+CVTNUMERICS_EXPORT CellSums ExactCellSums(const Grid& grid, const std::vector<double>& sites,
   const std::vector<float>& density, const DensityTables& tables);
 
 /// Nearest site of every pixel centre, with a k-d tree, in parallel (ties: either site).
-CVTCORE_EXPORT std::vector<int> NearestSiteLabels(
+CVTNUMERICS_EXPORT std::vector<int> NearestSiteLabels(
   const Grid& grid, const std::vector<double>& sites);
 
 /// Nearest site of every pixel centre, by brute force (ties: the lower index).
-CVTCORE_EXPORT std::vector<int> BruteForceLabels(
+CVTNUMERICS_EXPORT std::vector<int> BruteForceLabels(
   const Grid& grid, const std::vector<double>& sites);
 
 } // namespace cvt

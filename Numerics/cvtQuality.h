@@ -2,7 +2,7 @@
 #ifndef cvtQuality_h
 #define cvtQuality_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
 
 #include <array>
@@ -23,7 +23,7 @@ struct QualityMeasures
   double AreaStandardDeviation = 0.0;
 };
 
-CVTCORE_EXPORT QualityMeasures MeasureQuality(const Grid& grid, const std::vector<double>& sites);
+CVTNUMERICS_EXPORT QualityMeasures MeasureQuality(const Grid& grid, const std::vector<double>& sites);
 
 /// Quality of a triangle mesh (a remesh): vertex valences and triangle angles.
 struct MeshQuality
@@ -36,7 +36,7 @@ struct MeshQuality
 };
 
 /// `points` flat (x, y, z, ...); triangles index them.
-CVTCORE_EXPORT MeshQuality MeasureMesh(
+CVTNUMERICS_EXPORT MeshQuality MeasureMesh(
   const std::vector<double>& points, const std::vector<std::array<int, 3>>& triangles);
 
 } // namespace cvt

@@ -3,7 +3,7 @@
 #ifndef cvtMemory_h
 #define cvtMemory_h
 
-#include "cvtCoreModule.h" // for export macro
+#include "cvtNumericsModule.h" // for export macro
 
 #include <string>
 
@@ -12,14 +12,14 @@ namespace cvt
 
 /// Bytes the system can give without swapping (MemAvailable of /proc/meminfo; else the free
 /// physical pages); 0 when unknown.
-CVTCORE_EXPORT double AvailableSystemMemory();
+CVTNUMERICS_EXPORT double AvailableSystemMemory();
 
 /// Resident memory of this process in bytes (Linux: /proc/self/statm); 0 when unknown.
-CVTCORE_EXPORT double ResidentMemory();
+CVTNUMERICS_EXPORT double ResidentMemory();
 
 /// "" when `bytes` fit in 90% of `available` (or `available` is unknown, 0), else a sentence:
 /// "<what> needs about N GB of <where>; M GB are available: <advice>".
-CVTCORE_EXPORT std::string CheckMemory(double bytes, double available, const std::string& what,
+CVTNUMERICS_EXPORT std::string CheckMemory(double bytes, double available, const std::string& what,
   const std::string& where, const std::string& advice);
 
 } // namespace cvt

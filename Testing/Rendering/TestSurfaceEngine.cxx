@@ -1,0 +1,113 @@
+// The GPU surface engine on a torus geometry image against independent CPU computations:
+// brute-force nearest-site labels, sums over the GPU's labels, constrained centroids.
+#include "cvtRenderingTestSupport.h"
+#include "cvtSurface.h"
+#include "vtkCVTSurfaceEngine.h"
+
+#include "vtkNew.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using cvttest::TorusGeometryImage;
+
+TEST(SurfaceEngine, LabelsAndSumsMatchTheCpu)
+{
+  // Enough sites that Euclidean cells stay small against the tube radius (few large cells
+  // reach across the hole: Euclidean Voronoi regions disconnected on the surface).
+  const cvt::GeometryImage gi = TorusGeometryImage(128, 64);
+  std::vector<long long> pixels;
+  const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 200, 3, pixels);
+  vtkNew<vtkCVTSurfaceEngine> engine;
+  ASSERT_TRUE(engine->SetGeometryImage(gi)) << engine->GetLastError();
+  ASSERT_TRUE(engine->SetSites(sites, pixels)) << engine->GetLastError();
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine->ComputeCellSums(sums)) << engine->GetLastError();
+  std::vector<int> labels;
+  ASSERT_TRUE(engine->GetLabels(labels));
+
+  // Brute force: the nearest site in 3D of every pixel; and the weighted sums over the GPU's
+  // labels (so that the reduction is checked on its own).
+  cvt::CellSums cpu;
+  cpu.Resize(200, true);
+  int wrong = 0;
+  const auto distance2 = [&](long long p, int s)
+  {
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      d2 += std::pow(gi.Position[3 * p + c] - sites[3 * s + c], 2);
+    }
+    return d2;
+  };
+  for (long long p = 0; p < gi.NumberOfPixels(); ++p)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (int s = 0; s < 200; ++s)
+    {
+      best = std::min(best, distance2(p, s));
+    }
+    const int label = labels[p];
+    ASSERT_GE(label, 0);
+    wrong += distance2(p, label) > best * (1.0 + 1e-5) ? 1 : 0;
+    const double w = gi.AreaWeight[p];
+    const double d[3] = { gi.Position[3 * p] - sites[3 * label],
+      gi.Position[3 * p + 1] - sites[3 * label + 1],
+      gi.Position[3 * p + 2] - sites[3 * label + 2] };
+    cpu.Mass[label] += w;
+    cpu.MomentX[label] += w * d[0];
+    cpu.MomentY[label] += w * d[1];
+    cpu.MomentZ[label] += w * d[2];
+    cpu.Energy[label] += w * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
+  std::cout << "[ measured ] surface 1+JFA: " << wrong << " of " << gi.NumberOfPixels()
+            << " pixels mislabelled\n";
+  EXPECT_LE(wrong, gi.NumberOfPixels() / 200); // under 0.5%
+  for (int s = 0; s < 200; ++s)
+  {
+    EXPECT_NEAR(sums.Mass[s], cpu.Mass[s], 1e-4 * cpu.Mass[s] + 1e-9);
+    EXPECT_NEAR(sums.MomentZ[s], cpu.MomentZ[s], 1e-4 * cpu.Mass[s] + 1e-9);
+    EXPECT_NEAR(sums.Energy[s], cpu.Energy[s], 1e-4 * cpu.Energy[s] + 1e-9);
+  }
+}
+
+TEST(SurfaceEngine, ConstrainedCentroidsMatchTheCpu)
+{
+  const cvt::GeometryImage gi = TorusGeometryImage(128, 64);
+  std::vector<long long> pixels;
+  const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 150, 8, pixels);
+  vtkNew<vtkCVTSurfaceEngine> engine;
+  ASSERT_TRUE(engine->SetGeometryImage(gi));
+  ASSERT_TRUE(engine->SetSites(sites, pixels));
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine->ComputeCellSums(sums));
+  std::vector<int> labels;
+  ASSERT_TRUE(engine->GetLabels(labels));
+  // Targets: the cells' 3D centroids, off the surface.
+  std::vector<double> centroids = sites;
+  for (size_t i = 0; i < 150; ++i)
+  {
+    centroids[3 * i] += sums.MomentX[i] / sums.Mass[i];
+    centroids[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
+    centroids[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
+  }
+  std::vector<double> gpuSites = sites, cpuSites = sites;
+  std::vector<long long> gpuPixels = pixels, cpuPixels = pixels;
+  ASSERT_TRUE(engine->NearestPointsInCells(centroids, gpuSites, gpuPixels))
+    << engine->GetLastError();
+  cvt::NearestPointsInCells(gi, labels, centroids, cpuSites, cpuPixels);
+  int samePixel = 0;
+  for (size_t i = 0; i < 150; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      // float on the GPU, double on the CPU: near-ties between triangles may pick either
+      EXPECT_NEAR(gpuSites[3 * i + c], cpuSites[3 * i + c], 1e-3) << "site " << i;
+    }
+    samePixel += gpuPixels[i] == cpuPixels[i] ? 1 : 0;
+  }
+  EXPECT_GE(samePixel, 145);
+}
