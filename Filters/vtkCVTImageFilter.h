@@ -9,13 +9,10 @@
  * initial sites (any vtkPointSet; z is ignored); without it NumberOfSites sites are drawn with
  * probability proportional to the density, seeded by RandomSeed.
  *
- * The energy is minimised on the GPU (vtkCVTOpenGLEngine: 1+JFA labelling and a regional
- * reduction per evaluation) by L-BFGS (default; Liu et al. 2009, NumberOfCorrections kept) or
- * by Lloyd's method (sites move to their centroids on the GPU), until
- * MaximumNumberOfIterations, until |grad F| falls below GradientTolerance times its initial
- * value, or until the relative energy decrease falls below Tolerance (Lloyd also stops when no
- * pixel changes site; 0 runs every iteration). L-BFGS also stops, with a warning naming the
- * reason, when no sufficient decrease is possible; its best sites are the output.
+ * The energy is minimised by the optimiser vtkCVTAlgorithm describes, on the engine
+ * vtkCVTGPUAlgorithm chooses: the OpenGL engine (vtkCVTOpenGLEngine: 1+JFA labelling and a
+ * regional reduction per evaluation; Lloyd's sites move to their centroids on the GPU) or the
+ * exact CPU engine.
  *
  * Outputs:
  * 0. sites: vtkPolyData, one vertex per site, point arrays SiteId, Mass, Energy; field data
@@ -37,50 +34,32 @@
 #define vtkCVTImageFilter_h
 
 #include "cvtFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
-#include "vtkSmartPointer.h" // for OpenGLEngine
-#include "vtkTimeStamp.h"    // for LastFailure
+#include "vtkCVTGPUAlgorithm.h"
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
-class vtkCVTOpenGLEngine;
+class vtkFieldData;
 class vtkImageData;
+class vtkPointSet;
 class vtkPolyData;
-class vtkRenderWindow;
-class vtkTable;
+namespace cvt
+{
+struct Grid;
+struct OptimizerResult;
+}
 
-class CVTFILTERS_EXPORT vtkCVTImageFilter : public vtkPolyDataAlgorithm
+class CVTFILTERS_EXPORT vtkCVTImageFilter : public vtkCVTGPUAlgorithm
 {
 public:
   static vtkCVTImageFilter* New();
-  vtkTypeMacro(vtkCVTImageFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkCVTImageFilter, vtkCVTGPUAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum Methods
+  enum ImageOutputPorts
   {
-    LLOYD = 0,
-    LBFGS = 1
+    DualPort = MeshPort
   };
-
-  enum OutputPorts
-  {
-    SitesPort = 0,
-    LabelsPort = 1,
-    DualPort = 2,
-    HistoryPort = 3
-  };
-
-  ///@{
-  /** Number of sites drawn when no initial sites are connected (default 1000). */
-  vtkSetClampMacro(NumberOfSites, int, 0, VTK_INT_MAX);
-  vtkGetMacro(NumberOfSites, int);
-  ///@}
-
-  ///@{
-  /** Seed of the initial site sampling (default 1): the same seed gives the same output. */
-  vtkSetMacro(RandomSeed, int);
-  vtkGetMacro(RandomSeed, int);
-  ///@}
 
   ///@{
   /**
@@ -95,41 +74,6 @@ public:
   ///@}
 
   ///@{
-  /** Iteration cap (default 100). */
-  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, VTK_INT_MAX);
-  vtkGetMacro(MaximumNumberOfIterations, int);
-  ///@}
-
-  ///@{
-  /**
-   * Stop when no pixel changes site or the relative energy decrease of an iteration falls
-   * below this (default 1e-6); 0 runs every iteration.
-   */
-  vtkSetClampMacro(Tolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Tolerance, double);
-  ///@}
-
-  ///@{
-  /** The optimiser: LBFGS (default) or LLOYD. */
-  vtkSetClampMacro(Method, int, LLOYD, LBFGS);
-  vtkGetMacro(Method, int);
-  void SetMethodToLloyd() { this->SetMethod(LLOYD); }
-  void SetMethodToLBFGS() { this->SetMethod(LBFGS); }
-  ///@}
-
-  ///@{
-  /** L-BFGS: number of corrections kept for the inverse Hessian (default 7). */
-  vtkSetClampMacro(NumberOfCorrections, int, 1, 100);
-  vtkGetMacro(NumberOfCorrections, int);
-  ///@}
-
-  ///@{
-  /** Stop when |grad F| falls below this fraction of its initial value (default 0: never). */
-  vtkSetClampMacro(GradientTolerance, double, 0.0, 1.0);
-  vtkGetMacro(GradientTolerance, double);
-  ///@}
-
-  ///@{
   /**
    * Also compute the exact energy of the output sites on the CPU (clipped Voronoi cells,
    * integrated exactly for the pixelwise-constant density) and report the relative difference
@@ -138,26 +82,6 @@ public:
   vtkSetMacro(ComputeExactEnergy, bool);
   vtkGetMacro(ComputeExactEnergy, bool);
   vtkBooleanMacro(ComputeExactEnergy, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The engine: AUTO (default: OpenGL on a hardware GPU; the exact CPU engine, multi-threaded,
-   * when the only OpenGL is a software renderer such as llvmpipe, or there is none), OPENGL
-   * (the GPU engine; an error without an OpenGL context) or CPU. The choice and its reason are
-   * in the sites' field data (Engine, EngineReason).
-   */
-  enum Engines
-  {
-    AUTO = 0,
-    OPENGL = 1,
-    CPU = 2
-  };
-  vtkSetClampMacro(Engine, int, AUTO, CPU);
-  vtkGetMacro(Engine, int);
-  void SetEngineToAuto() { this->SetEngine(AUTO); }
-  void SetEngineToOpenGL() { this->SetEngine(OPENGL); }
-  void SetEngineToCPU() { this->SetEngine(CPU); }
   ///@}
 
   ///@{
@@ -181,39 +105,9 @@ public:
   void SetInitialSitesData(vtkDataObject* sites);
 
   ///@{
-  /** Typed access to the outputs. */
-  vtkPolyData* GetSitesOutput();
+  /** Typed access to the outputs (GetSitesOutput and GetHistoryOutput: vtkCVTAlgorithm). */
   vtkImageData* GetLabelsOutput();
   vtkPolyData* GetDualOutput();
-  vtkTable* GetHistoryOutput();
-  ///@}
-
-  /** Description of the OpenGL context the last run used (empty before a run or on the CPU). */
-  const std::string& GetContextDescription() const { return this->ContextDescription; }
-
-  ///@{
-  /**
-   * The OpenGL engine (its context, compiled shaders and textures) lives as long as the filter,
-   * so an update after a changed property pays only for what changed. SetRenderWindow runs it
-   * on that window's context instead of one of its own (nullptr, the default, finds one);
-   * ReleaseGraphicsResources frees the engine, its GL objects and context now (the next update
-   * makes them again).
-   */
-  void SetRenderWindow(vtkRenderWindow* window);
-  vtkRenderWindow* GetRenderWindow() const;
-  void ReleaseGraphicsResources();
-  ///@}
-
-  ///@{
-  /**
-   * What RequestData returns after bad input or a failed run (the error is reported and the
-   * outputs are empty either way): 0 when on (default, VTK's convention: Update() fails), 1
-   * when off, so that ParaView shows the empty outputs (clears the view) and prints the error
-   * once instead of on every view's update. The ParaView plugin turns it off.
-   */
-  vtkSetMacro(FailPipelineOnError, bool);
-  vtkGetMacro(FailPipelineOnError, bool);
-  vtkBooleanMacro(FailPipelineOnError, bool);
   ///@}
 
 protected:
@@ -221,31 +115,23 @@ protected:
   ~vtkCVTImageFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /** RequestData's work: false after an error (reported with vtkErrorMacro). */
-  bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+  const char* GetLabelsDataType() const override { return "vtkImageData"; }
+  bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
-  int Method = LBFGS;
-  bool FailPipelineOnError = true;
-  vtkTimeStamp LastFailure; // when the last failed run ended (see FailPipelineOnError)
-  bool LastRunFailed = false;
-  int NumberOfCorrections = 7;
-  double GradientTolerance = 0.0;
+  /** The chosen density array's name, or nullptr for a uniform density. */
+  const char* GetDensityArrayName();
+  /** The initial sites: input 1's points, or NumberOfSites drawn from `density`. */
+  bool ReadInitialSites(vtkPointSet* initialSites, const cvt::Grid& grid,
+    const std::vector<float>& density, std::vector<double>& sites, std::string& error);
+  /** Rong et al.'s quality measures (Table 6) and, when asked, the exact energy. */
+  void AddQualityFields(vtkFieldData* fields, const cvt::Grid& grid,
+    const cvt::OptimizerResult& result, const std::vector<float>& density);
+
   bool ComputeExactEnergy = false;
-  int NumberOfSites = 1000;
-  int RandomSeed = 1;
-  int MaximumNumberOfIterations = 100;
   bool InvertDensity = false;
-  double Tolerance = 1e-6;
   bool AdaptiveJumpFlooding = true;
   bool SplitBoundaryPixels = true;
-  int Engine = AUTO;
-  std::string ContextDescription;
-  vtkSmartPointer<vtkRenderWindow> RenderWindow;
-  vtkSmartPointer<vtkCVTOpenGLEngine> OpenGLEngine; // made on first use, kept across updates
 
 private:
   vtkCVTImageFilter(const vtkCVTImageFilter&) = delete;

@@ -95,51 +95,21 @@ void AddTopology(vtkFieldData* fields, const char* prefix, const cvt::MeshTopolo
 vtkCVTRemeshFilter::vtkCVTRemeshFilter()
 {
   this->SetNumberOfInputPorts(1);
-  this->SetNumberOfOutputPorts(4);
   // What progress bars show (ParaView: the label the user knows, not the class name).
   this->SetProgressText("CVT Remesh");
+  this->Tolerance = 1e-7; // remeshes gain from the last small steps (valence, angles)
 }
 
-vtkPolyData* vtkCVTRemeshFilter::GetSitesOutput()
-{
-  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(SitesPort));
-}
+//------------------------------------------------------------------------------
 vtkPolyData* vtkCVTRemeshFilter::GetLabelsOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(LabelsPort));
 }
+
+//------------------------------------------------------------------------------
 vtkPolyData* vtkCVTRemeshFilter::GetRemeshOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(RemeshPort));
-}
-vtkTable* vtkCVTRemeshFilter::GetHistoryOutput()
-{
-  return vtkTable::SafeDownCast(this->GetOutputDataObject(HistoryPort));
-}
-
-//------------------------------------------------------------------------------
-int vtkCVTRemeshFilter::FillOutputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == HistoryPort ? "vtkTable" : "vtkPolyData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkCVTRemeshFilter::RequestUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface takes part in every cell: under MPI every rank reads all of it.
-  cvtvtk::RequestAllOfInput(inputVector[0]->GetInformationObject(0));
-  cvtvtk::ShareRequestedPiece(request, outputVector);
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkCVTRemeshFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  return cvtvtk::RunRequest(this, outputVector, this->FailPipelineOnError, this->LastFailure,
-    this->LastRunFailed, [&] { return this->Compute(inputVector, outputVector); });
 }
 
 //------------------------------------------------------------------------------
@@ -151,10 +121,6 @@ bool vtkCVTRemeshFilter::Compute(
   vtkPolyData* labelsOut = vtkPolyData::GetData(outputVector, LabelsPort);
   vtkPolyData* remeshOut = vtkPolyData::GetData(outputVector, RemeshPort);
   vtkTable* historyOut = vtkTable::GetData(outputVector, HistoryPort);
-  sitesOut->Initialize();
-  labelsOut->Initialize();
-  remeshOut->Initialize();
-  historyOut->Initialize();
 
   using Clock = std::chrono::steady_clock;
   const auto since = [](Clock::time_point start)
@@ -262,27 +228,16 @@ bool vtkCVTRemeshFilter::Compute(
   const std::vector<double> initial = cvt::SampleMeshSites(
     mesh, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed), &inputTopology);
   cvt::RestrictedVoronoi engine;
-  cvt::OptimizerOptions options;
-  options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
-  options.Tolerance = this->Tolerance;
-  options.GradientTolerance = this->GradientTolerance;
-  options.NumberOfCorrections = this->NumberOfCorrections;
+  cvt::OptimizerOptions options = this->GetOptimizerOptions();
   options.LloydWarmUpIterations = std::min(5, this->MaximumNumberOfIterations);
   cvt::OptimizerResult result;
   std::string error;
   const bool meshSet = engine.SetMesh(mesh);
   const double prepareSeconds = since(stage);
   stage = Clock::now();
-  const auto progress = [this](double fraction)
-  {
-    this->UpdateProgress(0.95 * fraction);
-    return !this->GetAbortExecute();
-  };
   cvt::RestrictedProblem restricted(engine);
-  const cvt::SiteState start{ initial, {} };
   const bool optimized = meshSet &&
-    (this->Method == LLOYD ? cvt::RunLloyd(restricted, start, options, progress, result, error)
-                           : cvt::RunLBFGS(restricted, start, options, progress, result, error));
+    this->Optimize(restricted, cvt::SiteState{ initial, {} }, options, result, error, 0.95);
   if (!optimized)
   {
     vtkErrorMacro(
@@ -310,12 +265,8 @@ bool vtkCVTRemeshFilter::Compute(
   // --- Outputs.
   cvtvtk::FillSites(sitesOut, sites, 3, 0.0, sums);
   vtkFieldData* fields = sitesOut->GetFieldData();
-  cvtvtk::AddFieldValue(fields, "Energy", sums.TotalEnergy());
-  cvtvtk::AddFieldValue(fields, "GradientNorm", sums.GradientNorm());
-  cvtvtk::AddFieldValue(fields, "Iterations", result.Iterations);
-  cvtvtk::AddFieldValue(fields, "Evaluations", result.Evaluations);
+  AddRunFields(fields, result, sums.GradientNorm());
   cvtvtk::AddFieldValue(fields, "SurfaceArea", cvt::SurfaceArea(mesh));
-  cvtvtk::AddFieldString(fields, "StopReason", result.StopReason);
   cvtvtk::AddFieldString(fields, "Engine", "CPU");
   cvtvtk::AddFieldString(fields, "EngineReason",
     std::string("exact restricted Voronoi cells on the input mesh, ") +
@@ -393,14 +344,6 @@ bool vtkCVTRemeshFilter::Compute(
 void vtkCVTRemeshFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FailPipelineOnError: " << this->FailPipelineOnError << "\n";
-  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
-  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
-  os << indent << "Method: " << (this->Method == LLOYD ? "Lloyd" : "L-BFGS") << "\n";
-  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
-  os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
   os << indent
      << "DensityArray: " << (this->DensityArray.empty() ? "(uniform)" : this->DensityArray) << "\n";
 }

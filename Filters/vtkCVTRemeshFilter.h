@@ -9,8 +9,9 @@
  * non-orientable surfaces are refused with a message saying where.
  *
  * NumberOfSites sites are drawn on the surface by area (times the optional DensityArray, a
- * point array: denser where larger; RandomSeed) and optimised by L-BFGS (default) or Lloyd on
- * the restricted centroidal Voronoi energy, computed exactly on the CPU (cvt::RestrictedVoronoi:
+ * point array: denser where larger; RandomSeed) and optimised by L-BFGS (default) or Lloyd
+ * (see vtkCVTAlgorithm; Tolerance defaults to 1e-7 here) on the restricted centroidal Voronoi
+ * energy, computed exactly on the CPU (cvt::RestrictedVoronoi:
  * each triangle clipped by the sites' bisector planes, multi-threaded with vtkSMPTools).
  *
  * Outputs:
@@ -32,92 +33,39 @@
 #define vtkCVTRemeshFilter_h
 
 #include "cvtFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
-#include "vtkTimeStamp.h" // for LastFailure
+#include "vtkCVTAlgorithm.h"
 
 #include <string> // for std::string
 
-class vtkTable;
-
-class CVTFILTERS_EXPORT vtkCVTRemeshFilter : public vtkPolyDataAlgorithm
+class CVTFILTERS_EXPORT vtkCVTRemeshFilter : public vtkCVTAlgorithm
 {
 public:
   static vtkCVTRemeshFilter* New();
-  vtkTypeMacro(vtkCVTRemeshFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkCVTRemeshFilter, vtkCVTAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum Methods
+  enum RemeshOutputPorts
   {
-    LLOYD = 0,
-    LBFGS = 1
-  };
-  enum OutputPorts
-  {
-    SitesPort = 0,
-    LabelsPort = 1,
-    RemeshPort = 2,
-    HistoryPort = 3
+    RemeshPort = MeshPort
   };
 
-  vtkSetClampMacro(NumberOfSites, int, 0, VTK_INT_MAX);
-  vtkGetMacro(NumberOfSites, int);
-  vtkSetMacro(RandomSeed, int);
-  vtkGetMacro(RandomSeed, int);
-  vtkSetClampMacro(Method, int, LLOYD, LBFGS);
-  vtkGetMacro(Method, int);
-  void SetMethodToLloyd() { this->SetMethod(LLOYD); }
-  void SetMethodToLBFGS() { this->SetMethod(LBFGS); }
-  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, VTK_INT_MAX);
-  vtkGetMacro(MaximumNumberOfIterations, int);
-  /** Stop when the relative energy decrease of an iteration falls below this (0: never). */
-  vtkSetClampMacro(Tolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Tolerance, double);
-  /** Stop when |grad F| falls below this fraction of its initial value (0: never). */
-  vtkSetClampMacro(GradientTolerance, double, 0.0, 1.0);
-  vtkGetMacro(GradientTolerance, double);
-  vtkSetClampMacro(NumberOfCorrections, int, 1, 100);
-  vtkGetMacro(NumberOfCorrections, int);
   /** A point array of the input used as density (denser where larger); empty: uniform. */
   vtkSetStdStringFromCharMacro(DensityArray);
   vtkGetCharFromStdStringMacro(DensityArray);
 
-  vtkPolyData* GetSitesOutput();
+  ///@{
+  /** Typed access to the outputs (GetSitesOutput and GetHistoryOutput: vtkCVTAlgorithm). */
   vtkPolyData* GetLabelsOutput();
   vtkPolyData* GetRemeshOutput();
-  vtkTable* GetHistoryOutput();
-
-  ///@{
-  /**
-   * What RequestData returns after bad input or a failed run (the error is reported and the
-   * outputs are empty either way): 0 when on (default, VTK's convention: Update() fails), 1
-   * when off, so that ParaView shows the empty outputs (clears the view) and prints the error
-   * once instead of on every view's update. The ParaView plugin turns it off.
-   */
-  vtkSetMacro(FailPipelineOnError, bool);
-  vtkGetMacro(FailPipelineOnError, bool);
-  vtkBooleanMacro(FailPipelineOnError, bool);
   ///@}
 
 protected:
   vtkCVTRemeshFilter();
   ~vtkCVTRemeshFilter() override = default;
 
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /** RequestData's work: false after an error (reported with vtkErrorMacro). */
-  bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+  const char* GetLabelsDataType() const override { return "vtkPolyData"; }
+  bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
-  int NumberOfSites = 1000;
-  int RandomSeed = 1;
-  int Method = LBFGS;
-  bool FailPipelineOnError = true;
-  vtkTimeStamp LastFailure; // when the last failed run ended (see FailPipelineOnError)
-  bool LastRunFailed = false;
-  int MaximumNumberOfIterations = 100;
-  double Tolerance = 1e-7;
-  double GradientTolerance = 0.0;
-  int NumberOfCorrections = 7;
   std::string DensityArray;
 
 private:

@@ -51,13 +51,35 @@ bool ReadFloats(vtkDataArray* array, int components, std::vector<float>& out)
   }
   return true;
 }
+
+/// The area weights of a geometry image's valid pixels: their range, sum and count.
+struct AreaWeights
+{
+  double Minimum = VTK_DOUBLE_MAX, Maximum = 0.0, Total = 0.0;
+  long long ValidPixels = 0;
+};
+
+AreaWeights MeasureAreaWeights(const cvt::GeometryImage& image)
+{
+  AreaWeights weights;
+  for (long long p = 0; p < image.NumberOfPixels(); ++p)
+  {
+    if (image.IsValid(p))
+    {
+      weights.Minimum = std::min(weights.Minimum, static_cast<double>(image.AreaWeight[p]));
+      weights.Maximum = std::max(weights.Maximum, static_cast<double>(image.AreaWeight[p]));
+      weights.Total += image.AreaWeight[p];
+      ++weights.ValidPixels;
+    }
+  }
+  return weights;
+}
 }
 
 //------------------------------------------------------------------------------
 vtkCVTSurfaceFilter::vtkCVTSurfaceFilter()
 {
   this->SetNumberOfInputPorts(1);
-  this->SetNumberOfOutputPorts(4);
   // What progress bars show (ParaView: the label the user knows, not the class name).
   this->SetProgressText("CVT Surface");
 }
@@ -66,42 +88,15 @@ vtkCVTSurfaceFilter::vtkCVTSurfaceFilter()
 vtkCVTSurfaceFilter::~vtkCVTSurfaceFilter() = default;
 
 //------------------------------------------------------------------------------
-void vtkCVTSurfaceFilter::SetRenderWindow(vtkRenderWindow* window)
-{
-  if (window != this->RenderWindow)
-  {
-    this->RenderWindow = window;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-vtkRenderWindow* vtkCVTSurfaceFilter::GetRenderWindow() const
-{
-  return this->RenderWindow;
-}
-
-//------------------------------------------------------------------------------
-void vtkCVTSurfaceFilter::ReleaseGraphicsResources()
-{
-  this->OpenGLEngine = nullptr; // its GL objects, then its context
-}
-
-vtkPolyData* vtkCVTSurfaceFilter::GetSitesOutput()
-{
-  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(SitesPort));
-}
 vtkImageData* vtkCVTSurfaceFilter::GetLabelsOutput()
 {
   return vtkImageData::SafeDownCast(this->GetOutputDataObject(LabelsPort));
 }
+
+//------------------------------------------------------------------------------
 vtkPolyData* vtkCVTSurfaceFilter::GetRemeshOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(RemeshPort));
-}
-vtkTable* vtkCVTSurfaceFilter::GetHistoryOutput()
-{
-  return vtkTable::SafeDownCast(this->GetOutputDataObject(HistoryPort));
 }
 
 //------------------------------------------------------------------------------
@@ -112,28 +107,11 @@ int vtkCVTSurfaceFilter::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkCVTSurfaceFilter::FillOutputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(),
-    port == LabelsPort ? "vtkImageData" : (port == HistoryPort ? "vtkTable" : "vtkPolyData"));
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 int vtkCVTSurfaceFilter::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   cvtvtk::DescribeLabelsLikeInput(
     inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(LabelsPort));
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkCVTSurfaceFilter::RequestUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  cvtvtk::RequestAllOfInput(inputVector[0]->GetInformationObject(0));
-  cvtvtk::ShareRequestedPiece(request, outputVector);
   return 1;
 }
 
@@ -188,77 +166,54 @@ bool vtkCVTSurfaceFilter::ReadGeometryImage(
 }
 
 //------------------------------------------------------------------------------
-int vtkCVTSurfaceFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  return cvtvtk::RunRequest(this, outputVector, this->FailPipelineOnError, this->LastFailure,
-    this->LastRunFailed, [&] { return this->Compute(inputVector, outputVector); });
-}
-
-//------------------------------------------------------------------------------
 bool vtkCVTSurfaceFilter::Compute(
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
-  vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
-  vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
-  vtkPolyData* remeshOut = vtkPolyData::GetData(outputVector, RemeshPort);
-  vtkTable* historyOut = vtkTable::GetData(outputVector, HistoryPort);
-  sitesOut->Initialize();
-  labelsOut->Initialize();
-  remeshOut->Initialize();
-  historyOut->Initialize();
-  this->ContextDescription.clear();
-
-  // --- The geometry image.
   cvt::GeometryImage image;
-  std::string readError;
-  if (!ReadGeometryImage(input, image, readError))
+  std::string error;
+  if (!ReadGeometryImage(input, image, error))
   {
-    vtkErrorMacro("" << readError);
+    vtkErrorMacro("" << error);
     return false;
   }
-  const std::string problem = cvt::CheckGeometryImage(image, this->NumberOfSites);
-  if (!problem.empty())
+  error = cvt::CheckGeometryImage(image, this->NumberOfSites);
+  if (!error.empty())
   {
-    vtkErrorMacro("Bad geometry image: " << problem << ".");
+    vtkErrorMacro("Bad geometry image: " << error << ".");
     return false;
   }
-  double minimumWeight = VTK_DOUBLE_MAX, maximumWeight = 0.0, area = 0.0;
-  long long valid = 0;
-  for (long long p = 0; p < image.NumberOfPixels(); ++p)
-  {
-    if (image.IsValid(p))
-    {
-      minimumWeight = std::min(minimumWeight, static_cast<double>(image.AreaWeight[p]));
-      maximumWeight = std::max(maximumWeight, static_cast<double>(image.AreaWeight[p]));
-      area += image.AreaWeight[p];
-      ++valid;
-    }
-  }
+  const AreaWeights weights = MeasureAreaWeights(image);
   // A cell should cover a good many pixels, even where pixels are largest.
-  const double cellArea = area / this->NumberOfSites;
-  if (maximumWeight > cellArea / 8.0)
+  const double cellArea = weights.Total / this->NumberOfSites;
+  if (weights.Maximum > cellArea / 8.0)
   {
     vtkWarningMacro("The geometry image is coarse for "
-      << this->NumberOfSites << " sites: its largest pixels cover " << maximumWeight / cellArea
+      << this->NumberOfSites << " sites: its largest pixels cover " << weights.Maximum / cellArea
       << " of a cell; use a finer resolution.");
   }
 
   const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
-  if (!choice.UseOpenGL)
+  const bool computed = choice.UseOpenGL
+    ? this->RunOnGPU(input, image, choice.Reason, outputVector)
+    : this->RunOnCPU(input, image, weights.ValidPixels, choice.Reason, outputVector);
+  if (computed)
   {
-    if (!this->RunOnCPU(input, image, valid, choice.Reason, outputVector))
+    vtkFieldData* fields = vtkPolyData::GetData(outputVector, SitesPort)->GetFieldData();
+    cvtvtk::AddFieldValue(fields, "MinimumAreaWeight", weights.Minimum);
+    cvtvtk::AddFieldValue(fields, "MaximumAreaWeight", weights.Maximum);
+    if (choice.UseOpenGL)
     {
-      return false;
+      cvtvtk::AddFieldValue(fields, "SurfaceArea", weights.Total); // the CPU run adds its own
     }
-    vtkFieldData* cpuFields = sitesOut->GetFieldData();
-    cvtvtk::AddFieldValue(cpuFields, "MinimumAreaWeight", minimumWeight);
-    cvtvtk::AddFieldValue(cpuFields, "MaximumAreaWeight", maximumWeight);
-    return true;
   }
+  return computed;
+}
 
-  // --- Sites and the optimiser on the GPU engine.
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage& image,
+  const std::string& reason, vtkInformationVector* outputVector)
+{
   std::vector<long long> pixels;
   const std::vector<double> sites = cvt::SampleSurfaceSites(
     image, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed), pixels);
@@ -268,32 +223,16 @@ bool vtkCVTSurfaceFilter::Compute(
                           << this->NumberOfSites << " sites; use fewer sites or a finer image.");
     return false;
   }
-  if (!this->OpenGLEngine)
-  {
-    this->OpenGLEngine = vtkSmartPointer<vtkCVTSurfaceEngine>::New();
-  }
-  vtkCVTSurfaceEngine* engine = this->OpenGLEngine;
-  engine->SetRenderWindow(this->RenderWindow);
-  cvt::OptimizerOptions options;
-  options.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
-  options.Tolerance = this->Tolerance;
-  options.GradientTolerance = this->GradientTolerance;
-  options.NumberOfCorrections = this->NumberOfCorrections;
-  cvt::OptimizerResult result;
-  std::string error;
-  const auto progress = [this](double fraction)
-  {
-    this->UpdateProgress(fraction);
-    return !this->GetAbortExecute();
-  };
+  vtkCVTSurfaceEngine* engine = this->GetOpenGLEngine<vtkCVTSurfaceEngine>();
   const bool ready = engine->SetGeometryImage(image);
   this->ContextDescription = engine->GetContextDescription();
   cvt::GeometryImageProblem surface(*engine, image);
-  const cvt::SiteState initial{ sites, pixels };
+  cvt::OptimizerResult result;
+  std::string error;
   std::vector<int> labels;
   const bool optimized = ready &&
-    (this->Method == LLOYD ? cvt::RunLloyd(surface, initial, options, progress, result, error)
-                           : cvt::RunLBFGS(surface, initial, options, progress, result, error)) &&
+    this->Optimize(
+      surface, cvt::SiteState{ sites, pixels }, this->GetOptimizerOptions(), result, error) &&
     engine->GetLabels(labels);
   if (!optimized)
   {
@@ -301,28 +240,17 @@ bool vtkCVTSurfaceFilter::Compute(
       << (ready && !error.empty() ? error : engine->GetLastError()) << ".");
     return false;
   }
-  if (result.StopReason.rfind("no sufficient decrease", 0) == 0)
-  {
-    vtkWarningMacro("L-BFGS stopped after " << result.Iterations
-                                            << " iterations: " << result.StopReason
-                                            << "; the output holds its best sites.");
-  }
 
   // --- Outputs.
+  vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
   vtkSmartPointer<vtkPoints> points =
     cvtvtk::FillSites(sitesOut, result.Sites, 3, 0.0, result.Sums);
   vtkFieldData* fields = sitesOut->GetFieldData();
-  cvtvtk::AddFieldValue(fields, "Energy", result.Sums.TotalEnergy());
-  cvtvtk::AddFieldValue(fields, "GradientNorm", surface.GradientNorm(result.Sums));
-  cvtvtk::AddFieldValue(fields, "Iterations", result.Iterations);
-  cvtvtk::AddFieldValue(fields, "Evaluations", result.Evaluations);
-  cvtvtk::AddFieldValue(fields, "MinimumAreaWeight", minimumWeight);
-  cvtvtk::AddFieldValue(fields, "MaximumAreaWeight", maximumWeight);
-  cvtvtk::AddFieldValue(fields, "SurfaceArea", area);
-  cvtvtk::AddFieldString(fields, "StopReason", result.StopReason);
+  AddRunFields(fields, result, surface.GradientNorm(result.Sums));
   cvtvtk::AddFieldString(fields, "Engine", "OpenGL");
-  cvtvtk::AddFieldString(fields, "EngineReason", choice.Reason);
+  cvtvtk::AddFieldString(fields, "EngineReason", reason);
 
+  vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
   labelsOut->ShallowCopy(input);
   labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(labels));
 
@@ -333,21 +261,20 @@ bool vtkCVTSurfaceFilter::Compute(
     const vtkIdType ids[3] = { t[0], t[1], t[2] };
     triangles->InsertNextCell(3, ids);
   }
+  vtkPolyData* remeshOut = vtkPolyData::GetData(outputVector, RemeshPort);
   remeshOut->SetPoints(points);
   remeshOut->SetPolys(triangles);
-  const cvt::MeshQuality quality = cvt::MeasureMesh(result.Sites, dual);
-  vtkFieldData* remeshFields = remeshOut->GetFieldData();
-  cvtvtk::AddMeshQuality(remeshFields, quality);
+  cvtvtk::AddMeshQuality(remeshOut->GetFieldData(), cvt::MeasureMesh(result.Sites, dual));
   vtkNew<vtkIntArray> remeshIds;
   remeshIds->DeepCopy(sitesOut->GetPointData()->GetArray("SiteId"));
   remeshOut->GetPointData()->AddArray(remeshIds);
 
-  cvtvtk::FillHistoryTable(historyOut, result.History);
+  cvtvtk::FillHistoryTable(vtkTable::GetData(outputVector, HistoryPort), result.History);
   return true;
 }
 
 //------------------------------------------------------------------------------
-int vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image,
+bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image,
   long long valid, const std::string& reason, vtkInformationVector* outputVector)
 {
   // About 60 triangles per site: the restricted cells are exact on the triangles, which differ
@@ -376,13 +303,7 @@ int vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage&
 
   vtkNew<vtkCVTRemeshFilter> remesher;
   remesher->SetInputData(mesh);
-  remesher->SetNumberOfSites(this->NumberOfSites);
-  remesher->SetRandomSeed(this->RandomSeed);
-  remesher->SetMethod(this->Method);
-  remesher->SetMaximumNumberOfIterations(this->MaximumNumberOfIterations);
-  remesher->SetTolerance(this->Tolerance);
-  remesher->SetGradientTolerance(this->GradientTolerance);
-  remesher->SetNumberOfCorrections(this->NumberOfCorrections);
+  remesher->CopyOptimizerSettings(this);
   // Its errors become ours; its progress is ours, and our abort stops it.
   struct Relay
   {
@@ -420,7 +341,7 @@ int vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage&
   if (remesher->GetSitesOutput()->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("The CPU surface CVT failed: " << relay.Error);
-    return 0;
+    return false;
   }
   vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
   sitesOut->ShallowCopy(remesher->GetSitesOutput());
@@ -441,22 +362,11 @@ int vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage&
     sitesOut->GetPoint(i, &sites[3 * i]);
   }
   labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(cvt::NearestSiteLabels(image, sites)));
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkCVTSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FailPipelineOnError: " << this->FailPipelineOnError << "\n";
-  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
-  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
-  os << indent << "Method: " << (this->Method == LLOYD ? "Lloyd" : "L-BFGS") << "\n";
-  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
-  os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
-  os << indent << "Engine: " << cvtvtk::EngineKindName(this->Engine) << "\n";
-  os << indent << "RenderWindow: " << this->RenderWindow.Get() << "\n";
-  os << indent << "OpenGLEngine: " << (this->OpenGLEngine ? "kept" : "(none yet)") << "\n";
 }

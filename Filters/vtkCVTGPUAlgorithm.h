@@ -1,0 +1,89 @@
+/**
+ * @class   vtkCVTGPUAlgorithm
+ * @brief   A CVT filter with an OpenGL engine and a CPU one: the Engine choice and the OpenGL
+ *          engine's lifetime.
+ *
+ * Engine AUTO (default) takes OpenGL on a hardware GPU and the CPU engine (multi-threaded)
+ * when the only OpenGL is a software renderer such as llvmpipe, or there is none; OPENGL is an
+ * error without an OpenGL context. The choice and its reason are in the sites' field data
+ * (Engine, EngineReason).
+ *
+ * The OpenGL engine (its context, compiled shaders and textures) lives as long as the filter,
+ * so an update after a changed property pays only for what changed. SetRenderWindow runs it on
+ * that window's context instead of one of its own (nullptr, the default, finds one);
+ * ReleaseGraphicsResources frees the engine, its GL objects and context now (the next update
+ * makes them again).
+ */
+#ifndef vtkCVTGPUAlgorithm_h
+#define vtkCVTGPUAlgorithm_h
+
+#include "cvtFiltersModule.h" // for export macro
+#include "vtkCVTAlgorithm.h"
+#include "vtkSmartPointer.h" // for OpenGLEngine
+
+#include <string> // for std::string
+
+class vtkCVTGPUEngine;
+class vtkRenderWindow;
+
+class CVTFILTERS_EXPORT vtkCVTGPUAlgorithm : public vtkCVTAlgorithm
+{
+public:
+  vtkTypeMacro(vtkCVTGPUAlgorithm, vtkCVTAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The engine: AUTO (default), OPENGL or CPU (see above). */
+  enum Engines
+  {
+    AUTO = 0,
+    OPENGL = 1,
+    CPU = 2
+  };
+  vtkSetClampMacro(Engine, int, AUTO, CPU);
+  vtkGetMacro(Engine, int);
+  void SetEngineToAuto() { this->SetEngine(AUTO); }
+  void SetEngineToOpenGL() { this->SetEngine(OPENGL); }
+  void SetEngineToCPU() { this->SetEngine(CPU); }
+  ///@}
+
+  ///@{
+  /** The OpenGL engine's context and lifetime (see above). */
+  void SetRenderWindow(vtkRenderWindow* window);
+  vtkRenderWindow* GetRenderWindow() const;
+  void ReleaseGraphicsResources();
+  ///@}
+
+  /** Description of the OpenGL context the last run used (empty before a run or on the CPU). */
+  const std::string& GetContextDescription() const { return this->ContextDescription; }
+
+protected:
+  vtkCVTGPUAlgorithm();
+  ~vtkCVTGPUAlgorithm() override;
+
+  /** The kept OpenGL engine of type EngineType, made on first use, on the RenderWindow. */
+  template<class EngineType>
+  EngineType* GetOpenGLEngine()
+  {
+    if (!EngineType::SafeDownCast(this->OpenGLEngine))
+    {
+      this->OpenGLEngine = vtkSmartPointer<EngineType>::New();
+    }
+    this->UseRenderWindow();
+    return EngineType::SafeDownCast(this->OpenGLEngine);
+  }
+
+  int Engine = AUTO;
+  std::string ContextDescription;
+
+private:
+  void UseRenderWindow();
+
+  vtkSmartPointer<vtkRenderWindow> RenderWindow;
+  vtkSmartPointer<vtkCVTGPUEngine> OpenGLEngine; // made on first use, kept across updates
+
+  vtkCVTGPUAlgorithm(const vtkCVTGPUAlgorithm&) = delete;
+  void operator=(const vtkCVTGPUAlgorithm&) = delete;
+};
+
+#endif
