@@ -1,0 +1,266 @@
+#include "cvtReaders.h"
+
+#include "cvtErrors.h"
+
+#include "vtkAbstractPolyDataReader.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkJPEGReader.h"
+#include "vtkMetaImageReader.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPNGReader.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkSTLReader.h"
+#include "vtkXMLImageDataReader.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace cvtcli
+{
+namespace
+{
+
+std::string Extension(const std::string& path)
+{
+  const size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  return ext;
+}
+
+/// Some of VTK's readers crash or abort on corrupt files (PNG through libpng's error path,
+/// binary legacy VTK and PLY, binary STL with a wrong triangle count). So the file is read once
+/// in a child process first: a signal there, or no end within a minute, becomes a clear error
+/// here instead of a crash or a hang.
+void ProbeReader(vtkAlgorithm* reader, const std::string& path)
+{
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    alarm(60);
+    reader->Update();
+    std::_Exit(0);
+  }
+  if (child < 0)
+  {
+    return; // no probe possible: read as usual
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  // The child ends with _Exit(0) unless the reader kills it (a signal, or an exit status other
+  // than 0, as a sanitizer turns a crash into).
+  if (WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) != 0))
+  {
+    std::string why = "the reader crashed on it";
+    if (WIFSIGNALED(status))
+    {
+      why = WTERMSIG(status) == SIGALRM ? std::string("reading it did not end within a minute")
+                                        : why + ": " + strsignal(WTERMSIG(status));
+    }
+    Fail("cannot read --input '" + path + "': the file is corrupt or truncated (" + why + ")");
+  }
+}
+
+} // namespace
+
+vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  if (options.Input.empty())
+  {
+    const int n = options.Resolution;
+    image->SetDimensions(n, n, 1);
+    image->SetSpacing((options.Domain[1] - options.Domain[0]) / n,
+      (options.Domain[3] - options.Domain[2]) / n, 1.0);
+    image->SetOrigin(options.Domain[0] + 0.5 * image->GetSpacing()[0],
+      options.Domain[2] + 0.5 * image->GetSpacing()[1], 0.0);
+    return image; // no density array: uniform
+  }
+  struct stat info;
+  if (stat(options.Input.c_str(), &info) != 0)
+  {
+    Fail("cannot read --input '" + options.Input + "': no such file");
+  }
+  const std::string ext = Extension(options.Input);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  bool isPicture = false;
+  if (ext == "png")
+  {
+    auto r = vtkSmartPointer<vtkPNGReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+    isPicture = true;
+  }
+  else if (ext == "jpg" || ext == "jpeg")
+  {
+    auto r = vtkSmartPointer<vtkJPEGReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+    isPicture = true;
+  }
+  else if (ext == "vti")
+  {
+    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else if (ext == "mha" || ext == "mhd")
+  {
+    auto r = vtkSmartPointer<vtkMetaImageReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else
+  {
+    Fail("--input '" + options.Input + "' has an unknown type; use .png .jpg .vti .mha");
+  }
+  ProbeReader(reader, options.Input);
+  reader->Update();
+  vtkImageData* read = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!read || read->GetNumberOfPoints() == 0)
+  {
+    Fail("could not read an image from '" + options.Input + "'");
+  }
+  image->ShallowCopy(read);
+  vtkDataArray* values = options.Array.empty()
+    ? image->GetPointData()->GetScalars()
+    : image->GetPointData()->GetArray(options.Array.c_str());
+  if (!values)
+  {
+    Fail(options.Array.empty()
+        ? "'" + options.Input + "' has no scalar array; choose one with --array"
+        : "'" + options.Input + "' has no point array '" + options.Array + "'");
+  }
+  // Pictures: luminance of the colour channels (alpha ignored), scaled to [0, 1].
+  const int components = values->GetNumberOfComponents();
+  if (!isPicture && components != 1)
+  {
+    Fail("the density array has " + std::to_string(components) + " components; it needs one");
+  }
+  vtkNew<vtkFloatArray> density;
+  density->SetName("density");
+  density->SetNumberOfValues(values->GetNumberOfTuples());
+  const double scale = isPicture ? 1.0 / 255.0 : 1.0;
+  double maximum = -std::numeric_limits<double>::infinity();
+  for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
+  {
+    double v = values->GetComponent(p, 0);
+    if (isPicture && components >= 3)
+    {
+      v = 0.299 * values->GetComponent(p, 0) + 0.587 * values->GetComponent(p, 1) +
+        0.114 * values->GetComponent(p, 2);
+    }
+    v *= scale;
+    density->SetValue(p, static_cast<float>(v));
+    maximum = std::max(maximum, v);
+  }
+  if (options.Invert)
+  {
+    const double top = isPicture ? 1.0 : maximum;
+    for (vtkIdType p = 0; p < density->GetNumberOfValues(); ++p)
+    {
+      density->SetValue(p, static_cast<float>(top - density->GetValue(p)));
+    }
+  }
+  image->GetPointData()->Initialize();
+  image->GetPointData()->SetScalars(density);
+  if (options.HaveDomain)
+  {
+    int dims[3];
+    image->GetDimensions(dims);
+    image->SetExtent(0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1);
+    const double sx = (options.Domain[1] - options.Domain[0]) / dims[0];
+    const double sy = (options.Domain[3] - options.Domain[2]) / dims[1];
+    image->SetSpacing(sx, sy, 1.0);
+    image->SetOrigin(options.Domain[0] + 0.5 * sx, options.Domain[2] + 0.5 * sy, 0.0);
+  }
+  return image;
+}
+
+vtkSmartPointer<vtkPolyData> ReadSitesCsv(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    Fail("cannot read --initial-sites '" + path + "'");
+  }
+  std::vector<double> xy;
+  try
+  {
+    xy = cvtcli::ParseSitesCsv(in, path);
+  }
+  catch (const cvtcli::UsageError& error)
+  {
+    Fail(error.what());
+  }
+  vtkNew<vtkPoints> points;
+  for (size_t i = 0; i + 1 < xy.size(); i += 2)
+  {
+    points->InsertNextPoint(xy[i], xy[i + 1], 0.0);
+  }
+  auto sites = vtkSmartPointer<vtkPolyData>::New();
+  sites->SetPoints(points);
+  return sites;
+}
+
+vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options)
+{
+  struct stat info;
+  if (stat(options.Input.c_str(), &info) != 0)
+  {
+    Fail("cannot read --input '" + options.Input + "': no such file");
+  }
+  const std::string ext = Extension(options.Input);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == "vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else if (ext == "vtk")
+  {
+    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else if (ext == "stl" || ext == "ply" || ext == "obj")
+  {
+    vtkSmartPointer<vtkAbstractPolyDataReader> r;
+    if (ext == "stl")
+      r = vtkSmartPointer<vtkSTLReader>::New();
+    else if (ext == "ply")
+      r = vtkSmartPointer<vtkPLYReader>::New();
+    else
+      r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(options.Input.c_str());
+    reader = r;
+  }
+  else
+  {
+    Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj");
+  }
+  ProbeReader(reader, options.Input);
+  return reader;
+}
+
+} // namespace cvtcli
