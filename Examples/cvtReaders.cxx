@@ -6,12 +6,11 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkJPEGReader.h"
-#include "vtkMetaImageReader.h"
+#include "vtkImageReader2.h"
+#include "vtkImageReader2Factory.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
-#include "vtkPNGReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -26,6 +25,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -80,6 +80,34 @@ void ProbeReader(vtkAlgorithm* reader, const std::string& path)
   }
 }
 
+/// The density formats: pictures give the luminance of their colour channels (or their grey
+/// channel) over 255, data its one component as it is.
+struct DensityFormat
+{
+  const char* Extension;
+  bool Picture;
+};
+const DensityFormat DensityFormats[] = { { "png", true }, { "jpg", true }, { "jpeg", true },
+  { "vti", false }, { "mha", false }, { "mhd", false } };
+
+/// VTK's reader for a density format. vtkImageReader2Factory has the pictures' and MetaImage's
+/// readers; .vti is an XML format, which it does not list. It is asked by extension, not by
+/// contents (CreateImageReader2), so that a damaged file still reaches its format's reader inside
+/// ProbeReader's child, never each reader's header test in this process.
+vtkSmartPointer<vtkAlgorithm> ImageReader(const std::string& path, const std::string& ext)
+{
+  if (ext == "vti")
+  {
+    auto reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  auto reader =
+    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2FromExtension(ext.c_str()));
+  reader->SetFileName(path.c_str());
+  return reader;
+}
+
 } // namespace
 
 vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
@@ -101,38 +129,13 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
     Fail("cannot read --input '" + options.Input + "': no such file");
   }
   const std::string ext = Extension(options.Input);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  bool isPicture = false;
-  if (ext == "png")
-  {
-    auto r = vtkSmartPointer<vtkPNGReader>::New();
-    r->SetFileName(options.Input.c_str());
-    reader = r;
-    isPicture = true;
-  }
-  else if (ext == "jpg" || ext == "jpeg")
-  {
-    auto r = vtkSmartPointer<vtkJPEGReader>::New();
-    r->SetFileName(options.Input.c_str());
-    reader = r;
-    isPicture = true;
-  }
-  else if (ext == "vti")
-  {
-    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
-    r->SetFileName(options.Input.c_str());
-    reader = r;
-  }
-  else if (ext == "mha" || ext == "mhd")
-  {
-    auto r = vtkSmartPointer<vtkMetaImageReader>::New();
-    r->SetFileName(options.Input.c_str());
-    reader = r;
-  }
-  else
+  const auto format = std::find_if(std::begin(DensityFormats), std::end(DensityFormats),
+    [&ext](const DensityFormat& f) { return ext == f.Extension; });
+  if (format == std::end(DensityFormats))
   {
     Fail("--input '" + options.Input + "' has an unknown type; use .png .jpg .vti .mha");
   }
+  vtkSmartPointer<vtkAlgorithm> reader = ImageReader(options.Input, ext);
   ProbeReader(reader, options.Input);
   reader->Update();
   vtkImageData* read = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
@@ -152,19 +155,19 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
   }
   // Pictures: luminance of the colour channels (alpha ignored), scaled to [0, 1].
   const int components = values->GetNumberOfComponents();
-  if (!isPicture && components != 1)
+  if (!format->Picture && components != 1)
   {
     Fail("the density array has " + std::to_string(components) + " components; it needs one");
   }
   vtkNew<vtkFloatArray> density;
   density->SetName("density");
   density->SetNumberOfValues(values->GetNumberOfTuples());
-  const double scale = isPicture ? 1.0 / 255.0 : 1.0;
+  const double scale = format->Picture ? 1.0 / 255.0 : 1.0;
   double maximum = -std::numeric_limits<double>::infinity();
   for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
   {
     double v = values->GetComponent(p, 0);
-    if (isPicture && components >= 3)
+    if (format->Picture && components >= 3)
     {
       v = 0.299 * values->GetComponent(p, 0) + 0.587 * values->GetComponent(p, 1) +
         0.114 * values->GetComponent(p, 2);
@@ -175,7 +178,7 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
   }
   if (options.Invert)
   {
-    const double top = isPicture ? 1.0 : maximum;
+    const double top = format->Picture ? 1.0 : maximum;
     for (vtkIdType p = 0; p < density->GetNumberOfValues(); ++p)
     {
       density->SetValue(p, static_cast<float>(top - density->GetValue(p)));
