@@ -6,8 +6,10 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkImageExtractComponents.h"
 #include "vtkImageReader2.h"
 #include "vtkImageReader2Factory.h"
+#include "vtkImageShiftScale.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
@@ -26,7 +28,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
-#include <limits>
+#include <new>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -108,6 +110,59 @@ vtkSmartPointer<vtkAlgorithm> ImageReader(const std::string& path, const std::st
   return reader;
 }
 
+/// Rec. 601 luma (0.299 R + 0.587 G + 0.114 B, alpha ignored) over 255, as floats. By hand:
+/// vtkImageLuminance weighs 0.30, 0.59, 0.11 in float, truncates the result to the input's type
+/// (8-bit colour gives 256 grey levels) and takes exactly three components (no RGBA); the exact
+/// VTK equivalent (a double copy, three vtkImageExtractComponents, vtkImageWeightedSum) holds
+/// 56 bytes per RGB pixel, more than the CVT's own 48.
+vtkSmartPointer<vtkDataArray> Luminance(vtkDataArray* rgb)
+{
+  auto luma = vtkSmartPointer<vtkFloatArray>::New();
+  if (!luma->SetNumberOfValues(rgb->GetNumberOfTuples()))
+  {
+    throw std::bad_alloc(); // main reports it as out of memory
+  }
+  for (vtkIdType p = 0; p < rgb->GetNumberOfTuples(); ++p)
+  {
+    const double y = 0.299 * rgb->GetComponent(p, 0) + 0.587 * rgb->GetComponent(p, 1) +
+      0.114 * rgb->GetComponent(p, 2);
+    luma->SetValue(p, static_cast<float>(y * (1.0 / 255.0)));
+  }
+  return luma;
+}
+
+/// (first component of `values` + shift) * scale as floats, computed in double by
+/// vtkImageShiftScale on the grid of `grid`.
+vtkSmartPointer<vtkDataArray> ShiftScale(
+  vtkImageData* grid, vtkDataArray* values, double shift, double scale)
+{
+  vtkNew<vtkImageData> input;
+  input->CopyStructure(grid);
+  input->GetPointData()->SetScalars(values);
+  vtkNew<vtkImageShiftScale> shiftScale;
+  vtkNew<vtkImageExtractComponents> first; // the grey channel of a grey + alpha picture
+  if (values->GetNumberOfComponents() > 1)
+  {
+    first->SetInputData(input);
+    first->SetComponents(0);
+    shiftScale->SetInputConnection(first->GetOutputPort());
+  }
+  else
+  {
+    shiftScale->SetInputData(input);
+  }
+  shiftScale->SetShift(shift);
+  shiftScale->SetScale(scale);
+  shiftScale->SetOutputScalarTypeToFloat();
+  shiftScale->Update();
+  vtkDataArray* result = shiftScale->GetOutput()->GetPointData()->GetScalars();
+  if (!result || result->GetNumberOfTuples() != values->GetNumberOfTuples())
+  {
+    throw std::bad_alloc(); // its only failure: main reports it as out of memory
+  }
+  return result;
+}
+
 } // namespace
 
 vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
@@ -153,37 +208,22 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
         ? "'" + options.Input + "' has no scalar array; choose one with --array"
         : "'" + options.Input + "' has no point array '" + options.Array + "'");
   }
-  // Pictures: luminance of the colour channels (alpha ignored), scaled to [0, 1].
   const int components = values->GetNumberOfComponents();
   if (!format->Picture && components != 1)
   {
     Fail("the density array has " + std::to_string(components) + " components; it needs one");
   }
-  vtkNew<vtkFloatArray> density;
-  density->SetName("density");
-  density->SetNumberOfValues(values->GetNumberOfTuples());
-  const double scale = format->Picture ? 1.0 / 255.0 : 1.0;
-  double maximum = -std::numeric_limits<double>::infinity();
-  for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
-  {
-    double v = values->GetComponent(p, 0);
-    if (format->Picture && components >= 3)
-    {
-      v = 0.299 * values->GetComponent(p, 0) + 0.587 * values->GetComponent(p, 1) +
-        0.114 * values->GetComponent(p, 2);
-    }
-    v *= scale;
-    density->SetValue(p, static_cast<float>(v));
-    maximum = std::max(maximum, v);
-  }
+  vtkSmartPointer<vtkDataArray> density = format->Picture && components >= 3
+    ? Luminance(values)
+    : ShiftScale(image, values, 0.0, format->Picture ? 1.0 / 255.0 : 1.0);
   if (options.Invert)
   {
-    const double top = format->Picture ? 1.0 : maximum;
-    for (vtkIdType p = 0; p < density->GetNumberOfValues(); ++p)
-    {
-      density->SetValue(p, static_cast<float>(top - density->GetValue(p)));
-    }
+    // top - value as (value - top) * -1 (a value equal to top gives -0, not +0); top is 1 for
+    // pictures, else the largest value.
+    const double top = format->Picture ? 1.0 : values->GetRange(0)[1];
+    density = ShiftScale(image, density, -top, -1.0);
   }
+  density->SetName("density");
   image->GetPointData()->Initialize();
   image->GetPointData()->SetScalars(density);
   if (options.HaveDomain)
