@@ -2,7 +2,6 @@
 
 #include "cvtErrors.h"
 
-#include "vtkAbstractPolyDataReader.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -82,6 +81,15 @@ void ProbeReader(vtkAlgorithm* reader, const std::string& path)
   }
 }
 
+/// A VTK reader of type Reader for `path`.
+template<typename Reader>
+vtkSmartPointer<vtkAlgorithm> Open(const std::string& path)
+{
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(path.c_str());
+  return reader;
+}
+
 /// The density formats: pictures give the luminance of their colour channels (or their grey
 /// channel) over 255, data its one component as it is.
 struct DensityFormat
@@ -100,9 +108,7 @@ vtkSmartPointer<vtkAlgorithm> ImageReader(const std::string& path, const std::st
 {
   if (ext == "vti")
   {
-    auto reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
-    reader->SetFileName(path.c_str());
-    return reader;
+    return Open<vtkXMLImageDataReader>(path);
   }
   auto reader =
     vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2FromExtension(ext.c_str()));
@@ -162,6 +168,17 @@ vtkSmartPointer<vtkDataArray> ShiftScale(
   }
   return result;
 }
+
+/// The mesh formats and their readers: a table, as VTK 9.2 has no factory of polydata readers
+/// (vtkImageReader2Factory knows images only; ParaView's vtkSMReaderFactory needs a session).
+struct MeshFormat
+{
+  const char* Extension;
+  vtkSmartPointer<vtkAlgorithm> (*Open)(const std::string& path);
+};
+const MeshFormat MeshFormats[] = { { "vtp", Open<vtkXMLPolyDataReader> },
+  { "vtk", Open<vtkPolyDataReader> }, { "stl", Open<vtkSTLReader> }, { "ply", Open<vtkPLYReader> },
+  { "obj", Open<vtkOBJReader> } };
 
 } // namespace
 
@@ -273,35 +290,13 @@ vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options)
     Fail("cannot read --input '" + options.Input + "': no such file");
   }
   const std::string ext = Extension(options.Input);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (ext == "vtp")
-  {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(options.Input.c_str());
-    reader = r;
-  }
-  else if (ext == "vtk")
-  {
-    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
-    r->SetFileName(options.Input.c_str());
-    reader = r;
-  }
-  else if (ext == "stl" || ext == "ply" || ext == "obj")
-  {
-    vtkSmartPointer<vtkAbstractPolyDataReader> r;
-    if (ext == "stl")
-      r = vtkSmartPointer<vtkSTLReader>::New();
-    else if (ext == "ply")
-      r = vtkSmartPointer<vtkPLYReader>::New();
-    else
-      r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(options.Input.c_str());
-    reader = r;
-  }
-  else
+  const auto format = std::find_if(std::begin(MeshFormats), std::end(MeshFormats),
+    [&ext](const MeshFormat& f) { return ext == f.Extension; });
+  if (format == std::end(MeshFormats))
   {
     Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj");
   }
+  vtkSmartPointer<vtkAlgorithm> reader = format->Open(options.Input);
   ProbeReader(reader, options.Input);
   return reader;
 }
