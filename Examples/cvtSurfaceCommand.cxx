@@ -1,0 +1,224 @@
+// cvt surface: a constrained CVT on a surface (a torus, or an --input mesh parameterised into a
+// geometry image) on the OpenGL engine, or on an --input mesh itself on the CPU (the remesh).
+#include "cvtCommands.h"
+#include "cvtErrors.h"
+#include "cvtOutputs.h"
+#include "cvtReaders.h"
+
+#include "vtkCVTGeometryImageSource.h"
+#include "vtkCVTMeshGeometryImage.h"
+#include "vtkCVTRemeshFilter.h"
+#include "vtkCVTSceneRenderer.h"
+#include "vtkCVTSurfaceFilter.h"
+#include "vtkCleanPolyData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkParametricTorus.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace cvtcli
+{
+namespace
+{
+
+/// The surface's geometry image: a torus, or a mesh read from --input and parameterised.
+vtkSmartPointer<vtkAlgorithm> SurfaceGeometryImage(const Options& options)
+{
+  if (options.Input.empty())
+  {
+    vtkNew<vtkParametricTorus> torus;
+    torus->SetRingRadius(options.Torus[0]);
+    torus->SetCrossSectionRadius(options.Torus[1]);
+    auto source = vtkSmartPointer<vtkCVTGeometryImageSource>::New();
+    source->SetParametricFunction(torus);
+    source->SetResolution(options.GIResolution[0], options.GIResolution[1]);
+    return source;
+  }
+  vtkSmartPointer<vtkAlgorithm> reader = MeshReader(options);
+  vtkNew<vtkCleanPolyData> merge;
+  merge->SetInputConnection(reader->GetOutputPort());
+  auto parameterise = vtkSmartPointer<vtkCVTMeshGeometryImage>::New();
+  parameterise->SetInputConnection(merge->GetOutputPort());
+  parameterise->SetResolution(options.GIResolution[0], options.GIResolution[1]);
+  return parameterise;
+}
+
+/// cvt surface --input MESH on the CPU engine: restricted Voronoi cells on the mesh itself.
+int RunRemesh(const Options& options)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point from)
+  { return std::chrono::duration<double>(Clock::now() - from).count(); };
+  const Clock::time_point start = Clock::now();
+  OutputFolder(options); // before any work: a folder that cannot be written fails now
+  vtkSmartPointer<vtkAlgorithm> reader = MeshReader(options);
+  vtkNew<ErrorObserver> readErrors;
+  reader->AddObserver(vtkCommand::ErrorEvent, readErrors);
+  reader->Update();
+  if (!readErrors->Message.empty())
+  {
+    Fail("cannot read --input '" + options.Input + "': " + readErrors->Message);
+  }
+  const double readSeconds = seconds(start);
+  vtkNew<vtkCVTRemeshFilter> cvt;
+  cvt->SetInputConnection(reader->GetOutputPort());
+  cvt->SetDensityArray(options.Array.c_str());
+  SetOptimizer(options, cvt.Get());
+  const Clock::time_point optimise = Clock::now();
+  RunOrFail(
+    cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetSitesOutput(); });
+  const double cvtSeconds = seconds(optimise);
+
+  const Clock::time_point write = Clock::now();
+  OutputFiles files(OutputFolder(options));
+  vtkPolyData* sites = cvt->GetSitesOutput();
+  vtkPolyData* remesh = cvt->GetRemeshOutput();
+  Write<vtkXMLPolyDataWriter>(sites, files, "sites.vtp");
+  Write<vtkXMLPolyDataWriter>(cvt->GetLabelsOutput(), files, "labels.vtp");
+  Write<vtkXMLPolyDataWriter>(remesh, files, "remesh.vtp");
+  WriteCsv(sites, cvt->GetHistoryOutput(), 3, files);
+  const double writeSeconds = seconds(write);
+  vtkNew<vtkCVTSceneRenderer> scene;
+  const bool pictureWritten = WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), files);
+  files.Commit();
+  if (options.Report)
+  {
+    vtkFieldData* in = sites->GetFieldData();
+    vtkFieldData* out = remesh->GetFieldData();
+    const auto topology = [](vtkDataObject* data, const std::string& prefix)
+    {
+      std::ostringstream text;
+      text << Field(data, (prefix + "Components").c_str()) << " parts, genus "
+           << Field(data, (prefix + "Genus").c_str()) << ", "
+           << Field(data, (prefix + "BoundaryLoops").c_str()) << " boundary loops";
+      return text.str();
+    };
+    std::cout << std::setprecision(6) << "report:\n"
+              << "  engine                      CPU: "
+              << in->GetAbstractArray("EngineReason")->GetVariantValue(0).ToString() << "\n"
+              << "  method                      " << options.Method << "\n"
+              << "  iterations / evaluations    " << Field(sites, "Iterations") << " / "
+              << Field(sites, "Evaluations") << "\n"
+              << "  energy F                    " << Field(sites, "Energy") << "\n"
+              << "  normalised F n / A^2        "
+              << Field(sites, "Energy") * sites->GetNumberOfPoints() /
+        (Field(sites, "SurfaceArea") * Field(sites, "SurfaceArea"))
+              << "\n"
+              << "  |grad F|                    " << Field(sites, "GradientNorm") << "\n"
+              << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
+              << "  input topology              " << topology(sites, "Input") << "\n"
+              << "  remesh topology             " << topology(remesh, "") << "\n"
+              << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
+              << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
+              << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
+              << Field(remesh, "SplitVertices") << " pinched vertices split, "
+              << Field(remesh, "FlippedEdges") << " edges flipped for angles, "
+              << Field(remesh, "ValenceFlips") << " for valence, " << Field(remesh, "MovedVertices")
+              << " vertices moved)\n"
+              << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
+              << " %\n"
+              << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
+              << Field(remesh, "MaximumAngle") << " degrees\n"
+              << "  seconds: read " << readSeconds << ", prepare " << Field(sites, "PrepareSeconds")
+              << ", optimise " << Field(sites, "OptimizeSeconds") << ", remesh "
+              << Field(sites, "RemeshSeconds") << " (CVT filter " << cvtSeconds << "), write "
+              << writeSeconds << "\n";
+    (void)out;
+  }
+  PrintSummary(options, sites, "", "sites.vtp sites.csv labels.vtp remesh.vtp history.csv cvt.png",
+    pictureWritten);
+  return 0;
+}
+
+} // namespace
+
+int RunSurface(const Options& options)
+{
+  if (!options.Input.empty() && options.Engine != "opengl")
+  {
+    return RunRemesh(options);
+  }
+  OutputFolder(options); // before any work: a folder that cannot be written fails now
+  vtkSmartPointer<vtkAlgorithm> geometryImage = SurfaceGeometryImage(options);
+  vtkNew<ErrorObserver> meshErrors;
+  geometryImage->AddObserver(vtkCommand::ErrorEvent, meshErrors);
+  geometryImage->Update();
+  if (!meshErrors->Message.empty())
+  {
+    Fail(meshErrors->Message);
+  }
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(geometryImage->GetOutputPort());
+  SetOptimizer(options, cvt.Get());
+  cvt->SetEngine(options.Engine == "opengl" ? vtkCVTSurfaceFilter::OPENGL
+      : options.Engine == "cpu"             ? vtkCVTSurfaceFilter::CPU
+                                            : vtkCVTSurfaceFilter::AUTO);
+  RunOrFail(
+    cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTSurfaceFilter*>(f)->GetSitesOutput(); });
+
+  OutputFiles files(OutputFolder(options));
+  vtkPolyData* sites = cvt->GetSitesOutput();
+  vtkPolyData* remesh = cvt->GetRemeshOutput();
+  Write<vtkXMLPolyDataWriter>(sites, files, "sites.vtp");
+  Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), files, "labels.vti");
+  Write<vtkXMLPolyDataWriter>(remesh, files, "remesh.vtp");
+  WriteCsv(sites, cvt->GetHistoryOutput(), 3, files);
+  vtkNew<vtkCVTSceneRenderer> scene;
+  const bool pictureWritten = WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), files);
+  files.Commit();
+
+  if (options.Report)
+  {
+    vtkFieldData* mesh = remesh->GetFieldData();
+    std::cout << std::setprecision(6) << "report:\n"
+              << "  method                      " << options.Method << "\n"
+              << "  iterations / evaluations    " << Field(sites, "Iterations") << " / "
+              << Field(sites, "Evaluations") << "\n"
+              << "  energy F                    " << Field(sites, "Energy") << "\n"
+              << "  |grad F| (tangential)       " << Field(sites, "GradientNorm") << "\n"
+              << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
+              << "  area weights min / max      " << Field(sites, "MinimumAreaWeight") << " / "
+              << Field(sites, "MaximumAreaWeight") << "\n"
+              << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
+              << remesh->GetNumberOfPolys() << " triangles\n"
+              << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
+              << " %\n"
+              << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
+              << Field(remesh, "MaximumAngle") << " degrees\n"
+              << "  valence histogram          ";
+    vtkDataArray* valence = mesh->GetArray("ValenceHistogram");
+    for (vtkIdType v = 0; v < valence->GetNumberOfTuples(); ++v)
+    {
+      if (valence->GetTuple1(v) > 0)
+      {
+        std::cout << " " << v << ":" << valence->GetTuple1(v);
+      }
+    }
+    std::cout << "\n  angle histogram (10 deg)   ";
+    vtkDataArray* angles = mesh->GetArray("AngleHistogram");
+    for (vtkIdType b = 0; b < angles->GetNumberOfTuples(); ++b)
+    {
+      if (angles->GetTuple1(b) > 0)
+      {
+        std::cout << " " << 10 * b << "-" << 10 * (b + 1) << ":" << angles->GetTuple1(b);
+      }
+    }
+    std::cout << "\n";
+  }
+  PrintSummary(options, sites, cvt->GetContextDescription(),
+    "sites.vtp sites.csv labels.vti remesh.vtp history.csv cvt.png", pictureWritten);
+  return 0;
+}
+
+} // namespace cvtcli
