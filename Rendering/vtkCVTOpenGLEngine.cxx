@@ -1,5 +1,6 @@
 #include "vtkCVTOpenGLEngine.h"
 
+#include "vtkCVTJumpFlooding.h"
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
 #include "vtkObjectFactory.h"
@@ -14,9 +15,9 @@
 #include "vtk_glew.h"
 
 #include "vtkCVTCollectFS.h"
-#include "vtkCVTJumpFloodFS.h"
 #include "vtkCVTLloydFS.h"
 #include "vtkCVTPassThroughFS.h"
+#include "vtkCVTPlaneDistance.h"
 #include "vtkCVTReduceFS.h"
 #include "vtkCVTReduceVS.h"
 #include "vtkCVTSeedVS.h"
@@ -56,18 +57,16 @@ double MillisecondsSince(Clock::time_point start)
 struct vtkCVTOpenGLEngine::Internals
 {
   vtkNew<vtkTextureObject> Density;
-  vtkNew<vtkTextureObject> Seeds[2];              // jump flooding ping-pong
-  vtkNew<vtkTextureObject> Sites[2];              // Lloyd ping-pong
+  vtkCVTJumpFlooding Flooding{ vtkCVTPlaneDistance }; // jump flooding ping-pong
+  vtkNew<vtkTextureObject> Sites[2];                  // Lloyd ping-pong
   vtkNew<vtkTextureObject> Candidates;            // split pixels: candidate sites and collectors
   vtkNew<vtkTextureObject> Pieces[MaxCandidates]; // split pixels: each candidate's piece
   vtkNew<vtkTextureObject> Sums;
   vtkNew<vtkTextureObject> Radius;
   vtkNew<vtkOpenGLFramebufferObject> SplitFramebuffer;
-  vtkNew<vtkOpenGLFramebufferObject> SeedsFramebuffer[2];
   vtkNew<vtkOpenGLFramebufferObject> SitesFramebuffer[2];
   vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray; // attribute-less point draws
-  std::unique_ptr<vtkOpenGLQuadHelper> JumpFloodQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> SplitQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CollectQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> LloydQuad;
@@ -89,14 +88,12 @@ struct vtkCVTOpenGLEngine::Internals
     this->SumsFramebuffer->ReleaseGraphicsResources(window);
     for (int i = 0; i < 2; ++i)
     {
-      this->Seeds[i]->ReleaseGraphicsResources(window);
       this->Sites[i]->ReleaseGraphicsResources(window);
-      this->SeedsFramebuffer[i]->ReleaseGraphicsResources(window);
       this->SitesFramebuffer[i]->ReleaseGraphicsResources(window);
     }
+    this->Flooding.Release(window);
     this->EmptyVertexArray->ReleaseGraphicsResources();
-    for (auto* quad :
-      { &this->JumpFloodQuad, &this->SplitQuad, &this->CollectQuad, &this->LloydQuad })
+    for (auto* quad : { &this->SplitQuad, &this->CollectQuad, &this->LloydQuad })
     {
       if (*quad)
       {
@@ -172,14 +169,10 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   this->Metric[0] = static_cast<float>(grid.Spacing[0]);
   this->Metric[1] = static_cast<float>(grid.Spacing[1]);
   this->NumberOfSites = 0;
-  this->FullStep = std::max(1, NextPowerOfTwo(std::max(grid.Width, grid.Height)) / 2);
+  this->FullStep = vtkCVTJumpFlooding::FullStep(grid.Width, grid.Height);
   this->NextStep = this->FullStep;
   bool ok = AllocateFloatTexture(in.Density, window, grid.Width, grid.Height, 1, density.data());
-  for (int i = 0; i < 2 && ok; ++i)
-  {
-    ok = AllocateFloatTexture(in.Seeds[i], window, grid.Width, grid.Height, 4) &&
-      AttachTargets(in.SeedsFramebuffer[i], window, in.Seeds[i], nullptr, true);
-  }
+  ok = ok && in.Flooding.Allocate(window, grid.Width, grid.Height);
   ok = ok && AllocateFloatTexture(in.Candidates, window, grid.Width, grid.Height, 4);
   for (int k = 0; k < MaxCandidates && ok; ++k)
   {
@@ -289,8 +282,7 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
 
   // Seed: clear to "no site", then one point per site (lowest id wins a shared pixel), then
   // a second chance in a free neighbouring pixel for the sites that lost theirs.
-  vtkShaderProgram* seed =
-    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSeedVS, vtkCVTPassThroughFS, "");
+  vtkShaderProgram* seed = ReadyProgram(window, vtkCVTSeedVS, vtkCVTPassThroughFS);
   if (!seed)
   {
     state->PopFramebufferBindings();
@@ -309,8 +301,8 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   in.EmptyVertexArray->Bind();
   for (int pass = 0; pass < 2; ++pass)
   {
-    in.SeedsFramebuffer[pass]->Bind();
-    in.SeedsFramebuffer[pass]->ActivateDrawBuffers(1);
+    in.Flooding.GetFramebuffer(pass)->Bind();
+    in.Flooding.GetFramebuffer(pass)->ActivateDrawBuffers(1);
     if (pass == 0)
     {
       state->vtkglClearColor(0.0f, 0.0f, -1.0f, 0.0f);
@@ -320,52 +312,32 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
     else
     {
       // Start from the first pass's seeds.
-      in.SeedsFramebuffer[0]->Bind(GL_READ_FRAMEBUFFER);
-      in.SeedsFramebuffer[0]->ActivateReadBuffer(0);
+      in.Flooding.GetFramebuffer(0)->Bind(GL_READ_FRAMEBUFFER);
+      in.Flooding.GetFramebuffer(0)->ActivateReadBuffer(0);
       state->vtkglBlitFramebuffer(0, 0, this->GridSize[0], this->GridSize[1], 0, 0,
         this->GridSize[0], this->GridSize[1], GL_COLOR_BUFFER_BIT, GL_NEAREST);
       state->vtkglClearDepth(1.0);
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-      in.Seeds[0]->Activate();
-      seed->SetUniformi("placed", in.Seeds[0]->GetTextureUnit());
+      in.Flooding.GetTexture(0)->Activate();
+      seed->SetUniformi("placed", in.Flooding.GetTexture(0)->GetTextureUnit());
     }
     seed->SetUniformi("secondChance", pass);
     glDrawArrays(GL_POINTS, 0, this->NumberOfSites);
   }
-  in.Seeds[0]->Deactivate();
+  in.Flooding.GetTexture(0)->Deactivate();
   in.EmptyVertexArray->Release();
   in.Sites[in.CurrentSites]->Deactivate();
   state->vtkglDisable(GL_DEPTH_TEST);
 
-  // 1+JFA: one pass of step 1, then initialStep, initialStep / 2, ..., 1.
-  std::vector<int> steps{ 1 };
-  for (int step = initialStep; step >= 1; step /= 2)
-  {
-    steps.push_back(step);
-  }
-
-  vtkShaderProgram* jump = ReadyQuad(in.JumpFloodQuad, window, vtkCVTJumpFloodFS);
-  if (!jump)
+  // 1+JFA from the seeds in texture 1.
+  const int labelled = in.Flooding.Flood(window, 1, initialStep, this->GridSize,
+    [this](vtkShaderProgram* jump) { jump->SetUniform2f("metric", this->Metric); });
+  if (labelled < 0)
   {
     state->PopFramebufferBindings();
     return this->Fail("the jump flooding shader did not compile");
   }
-  int source = 1; // the seeds
-  for (int step : steps)
-  {
-    const int target = 1 - source;
-    in.SeedsFramebuffer[target]->Bind();
-    in.SeedsFramebuffer[target]->ActivateDrawBuffers(1);
-    in.Seeds[source]->Activate();
-    jump->SetUniformi("seeds", in.Seeds[source]->GetTextureUnit());
-    jump->SetUniformi("stepLength", step);
-    jump->SetUniform2i("gridSize", this->GridSize);
-    jump->SetUniform2f("metric", this->Metric);
-    in.JumpFloodQuad->Render();
-    in.Seeds[source]->Deactivate();
-    source = target;
-  }
-  in.CurrentSeeds = source;
+  in.CurrentSeeds = labelled;
   state->PopFramebufferBindings();
   this->LastInitialStep = initialStep;
   return this->CheckGLError("jump flooding");
@@ -377,9 +349,9 @@ bool vtkCVTOpenGLEngine::Reduce()
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
-  vtkTextureObject* seeds = in.Seeds[in.CurrentSeeds];
+  vtkTextureObject* seeds = in.Flooding.GetTexture(in.CurrentSeeds);
   // The other jump flooding texture is free now: it receives the collected sums.
-  vtkTextureObject* collected = in.Seeds[1 - in.CurrentSeeds];
+  vtkTextureObject* collected = in.Flooding.GetTexture(1 - in.CurrentSeeds);
 
   vtkOpenGLState::ScopedglViewport viewport(state);
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
@@ -419,8 +391,8 @@ bool vtkCVTOpenGLEngine::Reduce()
     state->PopFramebufferBindings();
     return this->Fail("the collecting shader did not compile");
   }
-  in.SeedsFramebuffer[1 - in.CurrentSeeds]->Bind();
-  in.SeedsFramebuffer[1 - in.CurrentSeeds]->ActivateDrawBuffers(1);
+  in.Flooding.GetFramebuffer(1 - in.CurrentSeeds)->Bind();
+  in.Flooding.GetFramebuffer(1 - in.CurrentSeeds)->ActivateDrawBuffers(1);
   in.Candidates->Activate();
   collect->SetUniformi("candidates", in.Candidates->GetTextureUnit());
   const char* pieceNames[MaxCandidates] = { "piece0", "piece1", "piece2", "piece3" };
@@ -440,8 +412,7 @@ bool vtkCVTOpenGLEngine::Reduce()
   // Step 3: one point per pixel, scattered to its site's slot; target 0 sums, target 1 keeps
   // the maximum. vtkOpenGLState caches one blend equation for all targets, so the per-target
   // one is set directly and put back to FUNC_ADD afterwards.
-  vtkShaderProgram* reduce =
-    window->GetShaderCache()->ReadyShaderProgram(vtkCVTReduceVS, vtkCVTReduceFS, "");
+  vtkShaderProgram* reduce = ReadyProgram(window, vtkCVTReduceVS, vtkCVTReduceFS);
   if (!reduce)
   {
     seeds->Deactivate();
@@ -622,7 +593,7 @@ bool vtkCVTOpenGLEngine::GetLabels(std::vector<int>& labels)
   Internals& in = *this->Internal;
   const size_t pixels = static_cast<size_t>(this->Grid.NumberOfPixels());
   std::vector<float> texels(4 * pixels);
-  ReadTarget(in.SeedsFramebuffer[in.CurrentSeeds], this->Context->GetRenderWindow(), 0,
+  ReadTarget(in.Flooding.GetFramebuffer(in.CurrentSeeds), this->Context->GetRenderWindow(), 0,
     this->Grid.Width, this->Grid.Height, GL_RGBA, texels.data());
   labels.resize(pixels);
   for (size_t p = 0; p < pixels; ++p)

@@ -1,6 +1,7 @@
 #include "vtkCVTOpenGLHelpers.h"
 
 #include "vtkCVTOpenGLContext.h"
+#include "vtkCVTSlots.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -78,13 +79,32 @@ bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindo
   return complete;
 }
 
+std::string SpliceShader(const char* source, const char* distance)
+{
+  std::string spliced = source;
+  vtkShaderProgram::Substitute(spliced, "//CVT::Slots::Dec", vtkCVTSlots);
+  if (distance)
+  {
+    vtkShaderProgram::Substitute(spliced, "//CVT::Distance::Dec", distance);
+  }
+  return spliced;
+}
+
+vtkShaderProgram* ReadyProgram(
+  vtkOpenGLRenderWindow* window, const char* vertex, const char* fragment)
+{
+  return window->GetShaderCache()->ReadyShaderProgram(
+    SpliceShader(vertex).c_str(), SpliceShader(fragment).c_str(), "");
+}
+
 /// Creates a full-screen quad program on first use and binds it; nullptr if it did not compile.
-vtkShaderProgram* ReadyQuad(
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* window, const char* fragment)
+vtkShaderProgram* ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+  vtkOpenGLRenderWindow* window, const char* fragment, const char* distance)
 {
   if (!quad)
   {
-    quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fragment, ""));
+    quad.reset(
+      new vtkOpenGLQuadHelper(window, nullptr, SpliceShader(fragment, distance).c_str(), ""));
   }
   else
   {

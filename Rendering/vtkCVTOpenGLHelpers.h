@@ -40,9 +40,20 @@ bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* wind
 bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
   vtkTextureObject* target0, vtkTextureObject* target1 = nullptr, bool depth = false);
 
-/// Creates a full-screen quad program on first use and binds it; nullptr if it did not compile.
-vtkShaderProgram* ReadyQuad(
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* window, const char* fragment);
+/// A shader's source with the shared GLSL spliced in: the slot addressing (vtkCVTSlots.glsl) at
+/// //CVT::Slots::Dec and, when given, a distance (vtkCVTPlaneDistance.glsl or
+/// vtkCVTSurfaceDistance.glsl) at //CVT::Distance::Dec.
+std::string SpliceShader(const char* source, const char* distance = nullptr);
+
+/// Compiles (once; VTK's shader cache keeps it) and binds a point-drawing program of spliced
+/// sources; nullptr if it did not compile.
+vtkShaderProgram* ReadyProgram(
+  vtkOpenGLRenderWindow* window, const char* vertex, const char* fragment);
+
+/// Creates a full-screen quad program of a spliced fragment shader on first use and binds it;
+/// nullptr if it did not compile.
+vtkShaderProgram* ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+  vtkOpenGLRenderWindow* window, const char* fragment, const char* distance = nullptr);
 
 /// Reads a float render target back (format GL_RGBA or GL_RED).
 void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,

@@ -1,5 +1,6 @@
 #include "vtkCVTSurfaceEngine.h"
 
+#include "vtkCVTJumpFlooding.h"
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
 #include "vtkObjectFactory.h"
@@ -14,7 +15,7 @@
 #include "vtk_glew.h"
 
 #include "vtkCVTPassThroughFS.h"
-#include "vtkCVTSurfaceJumpFloodFS.h"
+#include "vtkCVTSurfaceDistance.h"
 #include "vtkCVTSurfaceNearestFS.h"
 #include "vtkCVTSurfaceNearestVS.h"
 #include "vtkCVTSurfaceReduceFS.h"
@@ -43,7 +44,7 @@ struct vtkCVTSurfaceEngine::Internals
 {
   vtkNew<vtkTextureObject> Positions; // (x, y, z, valid)
   vtkNew<vtkTextureObject> Weights;
-  vtkNew<vtkTextureObject> Seeds[2];
+  vtkCVTJumpFlooding Flooding{ vtkCVTSurfaceDistance }; // jump flooding ping-pong
   vtkNew<vtkTextureObject> Sites;
   vtkNew<vtkTextureObject> Sums;
   vtkNew<vtkTextureObject> Energy;
@@ -52,38 +53,32 @@ struct vtkCVTSurfaceEngine::Internals
   vtkNew<vtkTextureObject> NearestCorners; // per pixel: pixel index of that point
   vtkNew<vtkTextureObject> Nearest;        // slot per site: (point, pixel index)
   vtkNew<vtkTextureObject> NearestDepth;   // its depth buffer (distance)
-  vtkNew<vtkOpenGLFramebufferObject> SeedsFramebuffer[2];
   vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
   vtkNew<vtkOpenGLFramebufferObject> NearestPixelsFramebuffer;
   vtkNew<vtkOpenGLFramebufferObject> NearestFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> NearestQuad;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray;
-  std::unique_ptr<vtkOpenGLQuadHelper> JumpFloodQuad;
   int CurrentSeeds = 0;
 
   void Release(vtkOpenGLRenderWindow* window)
   {
-    for (vtkTextureObject* t : { this->Positions.Get(), this->Weights.Get(), this->Seeds[0].Get(),
-           this->Seeds[1].Get(), this->Sites.Get(), this->Sums.Get(), this->Energy.Get(),
-           this->Targets.Get(), this->NearestPoints.Get(), this->NearestCorners.Get(),
-           this->Nearest.Get(), this->NearestDepth.Get() })
+    for (vtkTextureObject* t : { this->Positions.Get(), this->Weights.Get(), this->Sites.Get(),
+           this->Sums.Get(), this->Energy.Get(), this->Targets.Get(), this->NearestPoints.Get(),
+           this->NearestCorners.Get(), this->Nearest.Get(), this->NearestDepth.Get() })
     {
       t->ReleaseGraphicsResources(window);
     }
-    for (vtkOpenGLFramebufferObject* f : { this->SeedsFramebuffer[0].Get(),
-           this->SeedsFramebuffer[1].Get(), this->SumsFramebuffer.Get(),
+    for (vtkOpenGLFramebufferObject* f : { this->SumsFramebuffer.Get(),
            this->NearestPixelsFramebuffer.Get(), this->NearestFramebuffer.Get() })
     {
       f->ReleaseGraphicsResources(window);
     }
     this->EmptyVertexArray->ReleaseGraphicsResources();
-    for (auto* quad : { &this->JumpFloodQuad, &this->NearestQuad })
+    this->Flooding.Release(window);
+    if (this->NearestQuad)
     {
-      if (*quad)
-      {
-        (*quad)->ReleaseGraphicsResources(window);
-        quad->reset();
-      }
+      this->NearestQuad->ReleaseGraphicsResources(window);
+      this->NearestQuad.reset();
     }
   }
 };
@@ -161,11 +156,7 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
   bool ok =
     AllocateFloatTexture(in.Positions, window, image.Width, image.Height, 4, positions.data()) &&
     AllocateFloatTexture(in.Weights, window, image.Width, image.Height, 1, image.AreaWeight.data());
-  for (int i = 0; i < 2 && ok; ++i)
-  {
-    ok = AllocateFloatTexture(in.Seeds[i], window, image.Width, image.Height, 4) &&
-      AttachTargets(in.SeedsFramebuffer[i], window, in.Seeds[i], nullptr, true);
-  }
+  ok = ok && in.Flooding.Allocate(window, image.Width, image.Height);
   ok = ok && AllocateFloatTexture(in.NearestPoints, window, image.Width, image.Height, 4) &&
     AllocateFloatTexture(in.NearestCorners, window, image.Width, image.Height, 1) &&
     AttachTargets(in.NearestPixelsFramebuffer, window, in.NearestPoints, in.NearestCorners);
@@ -268,18 +259,14 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
   state->PushFramebufferBindings();
 
   // Seed: each site in its pixel, the lowest id winning a shared pixel.
-  vtkShaderProgram* seed =
-    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSurfaceSeedVS, vtkCVTPassThroughFS, "");
-  vtkShaderProgram* jump =
-    seed ? ReadyQuad(in.JumpFloodQuad, window, vtkCVTSurfaceJumpFloodFS) : nullptr;
-  if (!seed || !jump)
+  vtkShaderProgram* seed = ReadyProgram(window, vtkCVTSurfaceSeedVS, vtkCVTPassThroughFS);
+  if (!seed)
   {
     state->PopFramebufferBindings();
-    return this->Fail("the surface labelling shaders did not compile");
+    return this->Fail("the surface seed shader did not compile");
   }
-  window->GetShaderCache()->ReadyShaderProgram(seed);
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
-  BindForNearestScatter(in.SeedsFramebuffer[0], window);
+  BindForNearestScatter(in.Flooding.GetFramebuffer(0), window);
   in.Sites->Activate();
   seed->SetUniformi("sites", in.Sites->GetTextureUnit());
   seed->SetUniform2i("slotSize", this->SlotSize);
@@ -292,35 +279,21 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
   state->vtkglDisable(GL_DEPTH_TEST);
 
   // 1+JFA with the full initial step.
-  int full = 1;
-  while (full < std::max(this->GridSize[0], this->GridSize[1]))
-  {
-    full *= 2;
-  }
-  std::vector<int> steps{ 1 };
-  for (int step = std::max(1, full / 2); step >= 1; step /= 2)
-  {
-    steps.push_back(step);
-  }
-  window->GetShaderCache()->ReadyShaderProgram(jump);
   in.Positions->Activate();
-  jump->SetUniformi("positions", in.Positions->GetTextureUnit());
-  jump->SetUniform2i("gridSize", this->GridSize);
-  jump->SetUniform2i("wrap", this->Wrap);
-  int source = 0;
-  for (int step : steps)
+  const int labelled = in.Flooding.Flood(window, 0,
+    vtkCVTJumpFlooding::FullStep(this->GridSize[0], this->GridSize[1]), this->GridSize,
+    [this](vtkShaderProgram* jump)
+    {
+      jump->SetUniformi("positions", this->Internal->Positions->GetTextureUnit());
+      jump->SetUniform2i("wrap", this->Wrap);
+    });
+  if (labelled < 0)
   {
-    const int target = 1 - source;
-    in.SeedsFramebuffer[target]->Bind();
-    in.SeedsFramebuffer[target]->ActivateDrawBuffers(1);
-    in.Seeds[source]->Activate();
-    jump->SetUniformi("seeds", in.Seeds[source]->GetTextureUnit());
-    jump->SetUniformi("stepLength", step);
-    in.JumpFloodQuad->Render();
-    in.Seeds[source]->Deactivate();
-    source = target;
+    in.Positions->Deactivate();
+    state->PopFramebufferBindings();
+    return this->Fail("the surface jump flooding shader did not compile");
   }
-  in.CurrentSeeds = source;
+  in.CurrentSeeds = labelled;
   if (this->MeasureTimings)
   {
     glFinish();
@@ -329,8 +302,7 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
   start = Clock::now();
 
   // Reduction: one point per pixel into its site's slot, both targets summed.
-  vtkShaderProgram* reduce =
-    window->GetShaderCache()->ReadyShaderProgram(vtkCVTSurfaceReduceVS, vtkCVTSurfaceReduceFS, "");
+  vtkShaderProgram* reduce = ReadyProgram(window, vtkCVTSurfaceReduceVS, vtkCVTSurfaceReduceFS);
   if (!reduce)
   {
     in.Positions->Deactivate();
@@ -342,9 +314,9 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
   in.SumsFramebuffer->ActivateDrawBuffers(2);
   state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
-  in.Seeds[in.CurrentSeeds]->Activate();
+  in.Flooding.GetTexture(in.CurrentSeeds)->Activate();
   in.Weights->Activate();
-  reduce->SetUniformi("seeds", in.Seeds[in.CurrentSeeds]->GetTextureUnit());
+  reduce->SetUniformi("seeds", in.Flooding.GetTexture(in.CurrentSeeds)->GetTextureUnit());
   reduce->SetUniformi("positions", in.Positions->GetTextureUnit());
   reduce->SetUniformi("weights", in.Weights->GetTextureUnit());
   reduce->SetUniform2i("gridSize", this->GridSize);
@@ -356,7 +328,7 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
   glDrawArrays(GL_POINTS, 0, this->GridSize[0] * this->GridSize[1]);
   in.EmptyVertexArray->Release();
   in.Weights->Deactivate();
-  in.Seeds[in.CurrentSeeds]->Deactivate();
+  in.Flooding.GetTexture(in.CurrentSeeds)->Deactivate();
   in.Positions->Deactivate();
   state->PopFramebufferBindings();
 
@@ -389,7 +361,7 @@ bool vtkCVTSurfaceEngine::GetLabels(std::vector<int>& labels)
   ScopedContext current(this->Context);
   const size_t pixels = static_cast<size_t>(this->GridSize[0]) * this->GridSize[1];
   std::vector<float> texels(4 * pixels);
-  ReadTarget(this->Internal->SeedsFramebuffer[this->Internal->CurrentSeeds],
+  ReadTarget(this->Internal->Flooding.GetFramebuffer(this->Internal->CurrentSeeds),
     this->Context->GetRenderWindow(), 0, this->GridSize[0], this->GridSize[1], GL_RGBA,
     texels.data());
   labels.resize(pixels);
@@ -462,9 +434,8 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
     return this->Fail("the GPU could not allocate the target texture");
   }
   vtkShaderProgram* nearest = ReadyQuad(in.NearestQuad, window, vtkCVTSurfaceNearestFS);
-  vtkShaderProgram* scatter = nearest
-    ? window->GetShaderCache()->ReadyShaderProgram(vtkCVTSurfaceNearestVS, vtkCVTPassThroughFS, "")
-    : nullptr;
+  vtkShaderProgram* scatter =
+    nearest ? ReadyProgram(window, vtkCVTSurfaceNearestVS, vtkCVTPassThroughFS) : nullptr;
   if (!nearest || !scatter)
   {
     return this->Fail("the constrained centroid shaders did not compile");
@@ -484,7 +455,7 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   in.NearestPixelsFramebuffer->Bind();
   in.NearestPixelsFramebuffer->ActivateDrawBuffers(2);
-  vtkTextureObject* seeds = in.Seeds[in.CurrentSeeds];
+  vtkTextureObject* seeds = in.Flooding.GetTexture(in.CurrentSeeds);
   seeds->Activate();
   in.Positions->Activate();
   in.Targets->Activate();

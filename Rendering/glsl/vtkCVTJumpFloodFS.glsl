@@ -1,38 +1,35 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// One jump flooding pass: every pixel looks at itself and its 8 neighbours stepLength pixels
-// away and keeps the nearest site seen, measured from its centre in physical units.
-// Texels hold (site x, site y, site id, 0) in grid units; id < 0 means "no site yet".
+// One jump flooding pass: every pixel that takes part looks at itself and its 8 neighbours
+// stepLength pixels away and keeps the nearest site seen. The texel layout, the distance and
+// the identified borders come from the distance snippet (plane or geometry image).
 uniform sampler2D seeds;
 uniform int stepLength;
 uniform ivec2 gridSize;
-uniform vec2 metric; // physical size of one pixel
-in vec2 texCoord;    // from vtkOpenGLQuadHelper: pixel centre / grid size
+in vec2 texCoord; // from vtkOpenGLQuadHelper: pixel centre / grid size
+
+//CVT::Distance::Dec
 
 void main()
 {
   ivec2 p = ivec2(texCoord * vec2(gridSize));
-  vec2 centre = vec2(p) + 0.5;
-  vec4 best = vec4(0.0, 0.0, -1.0, 0.0);
-  float bestDistance = 3.0e38;
-  for (int dy = -1; dy <= 1; ++dy)
+  vec4 here = cvtPixel(p);
+  vec4 best = cvtNoSite;
+  if (here.w > 0.0)
   {
-    for (int dx = -1; dx <= 1; ++dx)
+    float bestDistance = 3.0e38;
+    for (int n = 0; n < 9; ++n)
     {
-      ivec2 q = p + ivec2(dx, dy) * stepLength;
+      ivec2 q = cvtWrap(p + ivec2(n % 3 - 1, n / 3 - 1) * stepLength);
       if (q.x < 0 || q.y < 0 || q.x >= gridSize.x || q.y >= gridSize.y)
-      {
         continue;
-      }
       vec4 candidate = texelFetch(seeds, q, 0);
-      if (candidate.z < 0.0)
-      {
+      if (cvtSiteId(candidate) < 0.0)
         continue;
-      }
-      vec2 d = (candidate.xy - centre) * metric;
-      float distance2 = dot(d, d);
+      float distance2 = cvtDistance2(candidate, here);
       // Ties go to the lower id so the result does not depend on the visiting order.
-      if (distance2 < bestDistance || (distance2 == bestDistance && candidate.z < best.z))
+      if (distance2 < bestDistance ||
+        (distance2 == bestDistance && cvtSiteId(candidate) < cvtSiteId(best)))
       {
         bestDistance = distance2;
         best = candidate;

@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 // Regional reduction, step 3 of 3 (Rong et al. 3.2): one point per pixel, moved to the slot of
 // the pixel's site and summed there by additive float blending. The sums come from step 2.
 uniform sampler2D seeds;     // final jump flooding result: (x, y, id, 0), grid units
@@ -29,6 +30,5 @@ void main()
     cellSums = texelFetch(collected, p, 0);
     cellRadius = length((vec2(p) + 0.5 - seed.xy) * metric) * radiusScale;
   }
-  vec2 slot = vec2(id % slotSize.x, id / slotSize.x) + 0.5;
-  gl_Position = vec4(slot / vec2(slotSize) * 2.0 - 1.0, 0.0, 1.0);
+  gl_Position = cvtPointInto(cvtSlotTexel(id, slotSize), slotSize, 0.0);
 }

@@ -1,11 +1,12 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 // Seeds the jump flooding: one point per site, drawn into the pixel that holds the site.
 // Sites keep their float positions; the pixel only says where the flooding starts from.
 //
 // Two sites can fall in one pixel. The first pass keeps the lowest id there (depth test);
 // the second pass gives every site that lost its pixel a free neighbouring pixel, so that
 // it is not dropped from the diagram.
-uniform sampler2D sites;  // site i at slot (i % slotSize.x, i / slotSize.x): (x, y) in grid units
+uniform sampler2D sites;  // site i's slot: (x, y) in grid units
 uniform sampler2D placed; // second pass: the first pass's seeds
 uniform ivec2 slotSize;
 uniform ivec2 gridSize;
@@ -16,10 +17,10 @@ out vec4 result;
 void main()
 {
   int i = gl_VertexID;
-  vec2 site = texelFetch(sites, ivec2(i % slotSize.x, i / slotSize.x), 0).xy;
+  vec2 site = texelFetch(sites, cvtSlotTexel(i, slotSize), 0).xy;
   ivec2 pixel = clamp(ivec2(floor(site)), ivec2(0), gridSize - 1);
   result = vec4(site, float(i), 0.0);
-  float depth = (float(i) + 0.5) / float(numberOfSites) * 2.0 - 1.0; // lower id wins
+  float depth = cvtIdDepth(i, numberOfSites); // lower id wins
   if (secondChance == 1)
   {
     bool lost = texelFetch(placed, pixel, 0).z != float(i);
@@ -40,5 +41,5 @@ void main()
     }
     pixel = free;
   }
-  gl_Position = vec4((vec2(pixel) + 0.5) / vec2(gridSize) * 2.0 - 1.0, depth, 1.0);
+  gl_Position = cvtPointInto(pixel, gridSize, depth);
 }

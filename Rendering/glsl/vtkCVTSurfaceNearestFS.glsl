@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 //VTK::Output::Dec
 // Constrained centroids, step 1 of 2 (Rong et al. 4.3): every pixel labelled i finds the point
 // nearest to the target of site i (its cell's 3D centroid) on the two triangles of its quad
@@ -81,7 +82,7 @@ void main()
     return;
   }
   int i = int(id);
-  vec3 target = texelFetch(targets, ivec2(i % slotSize.x, i / slotSize.x), 0).xyz;
+  vec3 target = texelFetch(targets, cvtSlotTexel(i, slotSize), 0).xyz;
   vec3 q0 = closestOnTriangle(target, x[0].xyz, x[1].xyz, x[2].xyz);
   vec3 q1 = closestOnTriangle(target, x[0].xyz, x[2].xyz, x[3].xyz);
   vec3 q = distance(q0, target) <= distance(q1, target) ? q0 : q1;

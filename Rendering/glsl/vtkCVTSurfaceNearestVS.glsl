@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 // Constrained centroids, step 2 of 2: one point per pixel, moved to its site's slot with the
 // distance as depth; the depth test keeps each cell's nearest point.
 uniform sampler2D seeds;    // (site x, y, z, id)
@@ -21,7 +22,6 @@ void main()
     return;
   }
   int i = int(id);
-  vec2 slot = vec2(i % slotSize.x, i / slotSize.x) + 0.5;
   float depth = clamp(candidate.w / maximumDistance, 0.0, 1.0) * 2.0 - 1.0;
-  gl_Position = vec4(slot / vec2(slotSize) * 2.0 - 1.0, depth, 1.0);
+  gl_Position = cvtPointInto(cvtSlotTexel(i, slotSize), slotSize, depth);
 }

@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 // Regional reduction on a geometry image: one point per pixel, moved to its site's slot; the
 // pixel's area weight w gives w * (1, p - site) and w * |p - site|^2, summed by blending.
 uniform sampler2D seeds;     // (site x, y, z, id)
@@ -26,6 +27,5 @@ void main()
   cellSums = w * vec4(1.0, d);
   cellEnergy = w * dot(d, d);
   int id = int(seed.w);
-  vec2 slot = vec2(id % slotSize.x, id / slotSize.x) + 0.5;
-  gl_Position = vec4(slot / vec2(slotSize) * 2.0 - 1.0, 0.0, 1.0);
+  gl_Position = cvtPointInto(cvtSlotTexel(id, slotSize), slotSize, 0.0);
 }

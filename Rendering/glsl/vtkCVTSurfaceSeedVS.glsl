@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 // Surface seeding: one point per site, drawn into the geometry-image pixel that holds it.
 uniform sampler2D sites; // slot i: (x, y, z, pixel index)
 uniform ivec2 slotSize;
@@ -9,10 +10,10 @@ out vec4 result;
 void main()
 {
   int i = gl_VertexID;
-  vec4 site = texelFetch(sites, ivec2(i % slotSize.x, i / slotSize.x), 0);
+  vec4 site = texelFetch(sites, cvtSlotTexel(i, slotSize), 0);
   int pixel = int(site.w);
-  vec2 p = vec2(pixel % gridSize.x, pixel / gridSize.x) + 0.5;
-  float depth = (float(i) + 0.5) / float(numberOfSites) * 2.0 - 1.0; // lower id wins a pixel
-  gl_Position = vec4(p / vec2(gridSize) * 2.0 - 1.0, depth, 1.0);
+  // lower id wins a pixel
+  gl_Position = cvtPointInto(ivec2(pixel % gridSize.x, pixel / gridSize.x), gridSize,
+    cvtIdDepth(i, numberOfSites));
   result = vec4(site.xyz, float(i));
 }

@@ -1,0 +1,31 @@
+// Jump flooding on a geometry image (spliced in at //CVT::Distance::Dec): texels hold (site x,
+// y, z, id), distances are 3D Euclidean distances from the pixel's surface point, borders
+// identified by the wrap flags are neighbours, and masked pixels (w = 0) take no part.
+uniform sampler2D positions; // (x, y, z, valid)
+uniform ivec2 wrap;          // (wrap u, wrap v)
+const vec4 cvtNoSite = vec4(0.0, 0.0, 0.0, -1.0);
+
+float cvtSiteId(vec4 texel)
+{
+  return texel.w;
+}
+
+vec4 cvtPixel(ivec2 p)
+{
+  return texelFetch(positions, p, 0);
+}
+
+ivec2 cvtWrap(ivec2 q)
+{
+  if (wrap.x != 0)
+    q.x = (q.x % gridSize.x + gridSize.x) % gridSize.x;
+  if (wrap.y != 0)
+    q.y = (q.y % gridSize.y + gridSize.y) % gridSize.y;
+  return q;
+}
+
+float cvtDistance2(vec4 site, vec4 here)
+{
+  vec3 d = site.xyz - here.xyz;
+  return dot(d, d);
+}

@@ -1,0 +1,54 @@
+// Private to CVT::Rendering: the jump flooding pass (1+JFA, Rong et al. 2011) shared by the
+// OpenGL engines. It owns two ping-pong float textures with their framebuffers and the quad
+// program; the distance is a GLSL snippet spliced into vtkCVTJumpFloodFS.glsl (the plane's or
+// the geometry image's), and the engines seed the textures with their own shaders.
+#ifndef vtkCVTJumpFlooding_h
+#define vtkCVTJumpFlooding_h
+
+#include "vtkNew.h" // for the textures
+
+#include <functional>
+#include <memory>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+
+class vtkCVTJumpFlooding
+{
+public:
+  /// `distance`: the GLSL source of vtkCVTPlaneDistance or vtkCVTSurfaceDistance.
+  explicit vtkCVTJumpFlooding(const char* distance);
+  ~vtkCVTJumpFlooding();
+
+  /// Two width x height RGBA float textures, each with a framebuffer and a depth buffer (the
+  /// seeding keeps the lowest site id per pixel by depth test); storage follows sizes.
+  bool Allocate(vtkOpenGLRenderWindow* window, int width, int height);
+
+  vtkTextureObject* GetTexture(int i) { return this->Textures[i]; }
+  vtkOpenGLFramebufferObject* GetFramebuffer(int i) { return this->Framebuffers[i]; }
+
+  /// The step that reaches across the whole grid: half the power of two at or above its side.
+  static int FullStep(int width, int height);
+
+  /// 1+JFA from the seeds in texture `seeded`: one pass of step 1, then initialStep,
+  /// initialStep / 2, ..., 1, each pixel keeping its nearest site. `setUniforms` sets the
+  /// distance's own uniforms (and activates its textures). The caller sets the viewport and
+  /// disables blending and depth. Returns which texture holds the labelling, -1 when the shader
+  /// did not compile.
+  int Flood(vtkOpenGLRenderWindow* window, int seeded, int initialStep, const int gridSize[2],
+    const std::function<void(vtkShaderProgram*)>& setUniforms);
+
+  /// Frees the textures, framebuffers and program.
+  void Release(vtkOpenGLRenderWindow* window);
+
+private:
+  const char* Distance;
+  vtkNew<vtkTextureObject> Textures[2];
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffers[2];
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+};
+
+#endif
