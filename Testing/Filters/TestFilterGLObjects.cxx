@@ -1,5 +1,6 @@
 // The filters' OpenGL engines: kept across updates (no new storage for a new seed, only slot
 // textures for a new site count), and nothing left behind on a handed-in render window.
+#include "cvtFilterTestSupport.h"
 #include "cvtRenderingTestSupport.h"
 #include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTImageFilter.h"
@@ -22,16 +23,10 @@
 
 using cvttest::LiveGLObjects;
 
+using cvttest::TorusImage;
+
 namespace
 {
-vtkSmartPointer<vtkImageData> Torus(int w, int h)
-{
-  vtkNew<vtkCVTGeometryImageSource> source;
-  source->SetResolution(w, h);
-  source->Update();
-  return source->GetOutput();
-}
-
 /// A uniform 96 x 96 image for the image filter.
 vtkSmartPointer<vtkImageData> FlatImage()
 {
@@ -57,7 +52,7 @@ TEST(GLObjects, FiltersKeepTheirEngineAcrossUpdates)
   flat->SetNumberOfSites(50);
   flat->SetMaximumNumberOfIterations(3);
   vtkNew<vtkCVTSurfaceFilter> surface;
-  surface->SetInputData(Torus(128, 64));
+  surface->SetInputData(TorusImage(128, 64));
   surface->SetEngine(vtkCVTSurfaceFilter::OPENGL);
   surface->SetNumberOfSites(50);
   surface->SetMaximumNumberOfIterations(3);
@@ -89,7 +84,7 @@ TEST(GLObjects, FiltersOnAHandedInWindowLeaveNothingBehind)
   ASSERT_TRUE(holder->Initialize()) << holder->GetLastError();
   vtkRenderWindow* window = holder->GetRenderWindow();
   vtkSmartPointer<vtkImageData> image = FlatImage();
-  vtkSmartPointer<vtkImageData> torus = Torus(128, 64);
+  vtkSmartPointer<vtkImageData> torus = TorusImage(128, 64);
   const auto run = [&](vtkRenderWindow* context, double energies[2])
   {
     vtkNew<vtkCVTImageFilter> flat;

@@ -1,5 +1,6 @@
 // The surface filters: geometry images (area weights, meshes parameterised and resampled), the
 // constrained CVT on a torus, remeshing of a torus and a sphere, both engines, bad input.
+#include "cvtFilterTestSupport.h"
 #include "cvtSurface.h"
 #include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTMeshGeometryImage.h"
@@ -34,16 +35,10 @@
 #include <map>
 #include <set>
 
+using cvttest::TorusImage;
+
 namespace
 {
-vtkSmartPointer<vtkImageData> Torus(int w, int h)
-{
-  vtkNew<vtkCVTGeometryImageSource> source;
-  source->SetResolution(w, h);
-  source->Update();
-  return source->GetOutput();
-}
-
 class ErrorCatcher : public vtkCommand
 {
 public:
@@ -96,7 +91,7 @@ MeshCheck CheckMesh(vtkPolyData* mesh)
 
 TEST(GeometryImage, TorusAreaWeightsSumToTheArea)
 {
-  auto image = Torus(256, 128);
+  auto image = TorusImage(256, 128);
   const double area = 4.0 * M_PI * M_PI * 1.0 * 0.4;
   const double total = image->GetFieldData()->GetArray("TotalArea")->GetTuple1(0);
   std::cout << "[ measured ] torus area " << total << " (exact " << area << ")\n";
@@ -293,12 +288,12 @@ TEST(SurfaceFilterBadInput, EveryBadGeometryImageSaysWhatToFix)
   noPositions->SetDimensions(8, 8, 1);
   EXPECT_NE(FailWith(noPositions).find("'Position'"), std::string::npos);
 
-  auto nan = Torus(16, 8);
+  auto nan = TorusImage(16, 8);
   vtkFloatArray::SafeDownCast(nan->GetPointData()->GetArray("Position"))
     ->SetComponent(5, 1, std::numeric_limits<float>::quiet_NaN());
   EXPECT_NE(FailWith(nan).find("not finite"), std::string::npos);
 
-  auto masked = Torus(16, 8);
+  auto masked = TorusImage(16, 8);
   vtkUnsignedCharArray* mask =
     vtkUnsignedCharArray::SafeDownCast(masked->GetPointData()->GetArray("Mask"));
   for (vtkIdType p = 5; p < mask->GetNumberOfTuples(); ++p)
@@ -307,7 +302,7 @@ TEST(SurfaceFilterBadInput, EveryBadGeometryImageSaysWhatToFix)
   }
   EXPECT_NE(FailWith(masked).find("mask leaves 5 pixels"), std::string::npos);
 
-  EXPECT_NE(FailWith(Torus(16, 8), 0).find("at least one"), std::string::npos);
+  EXPECT_NE(FailWith(TorusImage(16, 8), 0).find("at least one"), std::string::npos);
 
   vtkNew<vtkImageData> volume;
   volume->SetDimensions(4, 4, 4);
