@@ -34,6 +34,14 @@ void vtkCVTGPUAlgorithm::ReleaseGraphicsResources()
 }
 
 //------------------------------------------------------------------------------
+int vtkCVTGPUAlgorithm::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->ContextDescription.clear(); // set again by a run on the OpenGL engine
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
 void vtkCVTGPUAlgorithm::UseRenderWindow()
 {
   this->OpenGLEngine->SetRenderWindow(this->RenderWindow);

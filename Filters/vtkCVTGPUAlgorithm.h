@@ -61,6 +61,9 @@ protected:
   vtkCVTGPUAlgorithm();
   ~vtkCVTGPUAlgorithm() override;
 
+  /** Forgets the last run's context description, then runs as vtkCVTAlgorithm does. */
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
   /** The kept OpenGL engine of type EngineType, made on first use, on the RenderWindow. */
   template<class EngineType>
   EngineType* GetOpenGLEngine()

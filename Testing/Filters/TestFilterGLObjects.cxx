@@ -132,3 +132,27 @@ TEST(GLObjects, FiltersOnAHandedInWindowLeaveNothingBehind)
   std::cout << "[ measured ] live GL objects of the handed-in window: " << start << " before, "
             << LiveGLObjects(holder) << " after 5 rounds of two filters and an engine\n";
 }
+// The context description belongs to the last run: set by a run on the OpenGL engine, empty
+// after a run on the CPU engine by the same filter.
+TEST(GLObjects, ContextDescriptionIsTheLastRuns)
+{
+  vtkNew<vtkCVTImageFilter> flat;
+  flat->SetInputData(FlatImage());
+  flat->SetNumberOfSites(20);
+  flat->SetMaximumNumberOfIterations(2);
+  vtkNew<vtkCVTSurfaceFilter> surface;
+  surface->SetInputData(TorusImage(64, 32));
+  surface->SetNumberOfSites(20);
+  surface->SetMaximumNumberOfIterations(2);
+  for (vtkCVTGPUAlgorithm* filter : { static_cast<vtkCVTGPUAlgorithm*>(flat.Get()),
+         static_cast<vtkCVTGPUAlgorithm*>(surface.Get()) })
+  {
+    filter->SetEngineToOpenGL();
+    filter->Update();
+    EXPECT_FALSE(filter->GetContextDescription().empty()) << filter->GetClassName();
+    filter->SetEngineToCPU();
+    filter->Update();
+    ASSERT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 20);
+    EXPECT_EQ(filter->GetContextDescription(), "") << filter->GetClassName();
+  }
+}
