@@ -1,5 +1,6 @@
 // The `cvt` program's own parsers: its command line and the --initial-sites CSV. Kept apart
-// from the program so that the test suite can feed them any input (Testing/CommandLine/TestFuzz.cxx).
+// from the program so that the test suite can feed them any input
+// (Testing/CommandLine/TestFuzz.cxx).
 #ifndef cvtCommandLine_h
 #define cvtCommandLine_h
 

@@ -5,6 +5,7 @@
 #define cvtCommands_h
 
 #include "cvtCommandLine.h"
+#include "vtkCVTAlgorithm.h"
 
 namespace cvtcli
 {
@@ -13,8 +14,7 @@ int RunImage(const Options& options);
 int RunSurface(const Options& options);
 
 /// The optimiser options that the image, surface and remesh filters share.
-template<typename Filter>
-void SetOptimizer(const Options& options, Filter* filter)
+inline void SetOptimizer(const Options& options, vtkCVTAlgorithm* filter)
 {
   filter->SetNumberOfSites(options.Sites);
   filter->SetRandomSeed(static_cast<int>(options.Seed));

@@ -116,6 +116,12 @@ public:
   vtkBooleanMacro(FailPipelineOnError, bool);
   ///@}
 
+  /**
+   * The density array name that means "no density array, uniform density": what the ParaView
+   * plugin's density menus offer besides the input's arrays.
+   */
+  static const char* UniformDensityName() { return "Uniform density"; }
+
   /** Takes the optimiser properties (sites, seed, method, stop rules) of another CVT filter. */
   void CopyOptimizerSettings(vtkCVTAlgorithm* other);
 

@@ -25,7 +25,6 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkRenderWindow.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
@@ -259,10 +258,11 @@ bool vtkCVTImageFilter::Compute(
   std::vector<float> density;
   std::vector<double> sites;
   std::string error;
-  const bool densityChosen = this->GetDensityArrayName() != nullptr;
+  const char* densityName = this->GetDensityArrayName();
+  const bool densityChosen = densityName != nullptr;
   if (!ReadDomain(image, grid, error) ||
     !ReadDensity(densityChosen ? this->GetInputArrayToProcess(0, inputVector) : nullptr,
-      this->GetDensityArrayName(), this->InvertDensity, grid, density, error) ||
+      densityName, this->InvertDensity, grid, density, error) ||
     !this->ReadInitialSites(vtkPointSet::GetData(inputVector[1], 0), grid,
       densityChosen ? density : std::vector<float>(), sites, error))
   {
@@ -273,18 +273,18 @@ bool vtkCVTImageFilter::Compute(
   // --- The optimiser, on the engine chosen.
   const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
   cvt::ExactEngine cpu;
-  cvt::Engine* engine = &cpu;
-  if (choice.UseOpenGL)
+  vtkCVTOpenGLEngine* gpu =
+    choice.UseOpenGL ? this->GetOpenGLEngine<vtkCVTOpenGLEngine>() : nullptr;
+  cvt::Engine* engine = gpu ? static_cast<cvt::Engine*>(gpu) : &cpu;
+  if (gpu)
   {
-    vtkCVTOpenGLEngine* gpu = this->GetOpenGLEngine<vtkCVTOpenGLEngine>();
     gpu->SetAdaptiveStep(this->AdaptiveJumpFlooding);
     gpu->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
-    engine = gpu;
   }
   const bool ready = engine->SetDomain(grid, density);
-  if (choice.UseOpenGL)
+  if (gpu)
   {
-    this->ContextDescription = this->GetOpenGLEngine<vtkCVTOpenGLEngine>()->GetContextDescription();
+    this->ContextDescription = gpu->GetContextDescription();
   }
   cvt::PlaneProblem problem(*engine, grid);
   cvt::OptimizerResult result;

@@ -94,12 +94,6 @@ public:
   vtkBooleanMacro(SplitBoundaryPixels, bool);
   ///@}
 
-  /**
-   * The array name that means "no density array, uniform density": what the ParaView plugin's
-   * density menu offers besides the image's arrays. Any other name must be a point array.
-   */
-  static const char* UniformDensityName() { return "Uniform density"; }
-
   /** Initial sites (optional input 1). */
   void SetInitialSitesConnection(vtkAlgorithmOutput* output);
   void SetInitialSitesData(vtkDataObject* sites);

@@ -177,8 +177,7 @@ bool vtkCVTRemeshFilter::Compute(
       }
     }
   }
-  // "Uniform density" is what ParaView's array list offers for none.
-  if (!this->DensityArray.empty() && this->DensityArray != "Uniform density")
+  if (!this->DensityArray.empty() && this->DensityArray != UniformDensityName())
   {
     vtkDataArray* density = triangles->GetPointData()->GetArray(this->DensityArray.c_str());
     if (!density || density->GetNumberOfComponents() != 1)

@@ -23,7 +23,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkRenderWindow.h"
 #include "vtkTable.h"
 
 #include <algorithm>

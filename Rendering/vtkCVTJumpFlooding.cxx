@@ -36,14 +36,20 @@ bool vtkCVTJumpFlooding::Allocate(vtkOpenGLRenderWindow* window, int width, int 
 }
 
 //------------------------------------------------------------------------------
-int vtkCVTJumpFlooding::FullStep(int width, int height)
+int vtkCVTJumpFlooding::NextPowerOfTwo(double value)
 {
   int power = 1;
-  while (power < std::max(width, height) && power < (1 << 30))
+  while (power < value && power < (1 << 30))
   {
     power *= 2;
   }
-  return std::max(1, power / 2);
+  return power;
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTJumpFlooding::FullStep(int width, int height)
+{
+  return std::max(1, NextPowerOfTwo(std::max(width, height)) / 2);
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,9 @@ public:
   vtkTextureObject* GetTexture(int i) { return this->Textures[i]; }
   vtkOpenGLFramebufferObject* GetFramebuffer(int i) { return this->Framebuffers[i]; }
 
+  /// The smallest power of two at or above `value` (at most 2^30).
+  static int NextPowerOfTwo(double value);
+
   /// The step that reaches across the whole grid: half the power of two at or above its side.
   static int FullStep(int width, int height);
 

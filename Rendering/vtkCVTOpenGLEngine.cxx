@@ -36,16 +36,6 @@ namespace
 {
 constexpr int MaxCandidates = 4; // must match vtkCVTSplitPixelsFS.glsl
 
-int NextPowerOfTwo(double value)
-{
-  int p = 1;
-  while (p < value && p < (1 << 30))
-  {
-    p *= 2;
-  }
-  return p;
-}
-
 using Clock = std::chrono::steady_clock;
 double MillisecondsSince(Clock::time_point start)
 {
@@ -511,7 +501,8 @@ bool vtkCVTOpenGLEngine::ComputeCellSums(cvt::CellSums& sums)
   this->LastMaximumRadius = maximumRadius;
   // Next time, start from the smallest step whose reach (2 * step - 1) covers twice the
   // largest cell radius.
-  this->NextStep = std::min(this->FullStep, NextPowerOfTwo(maximumRadius + 0.5));
+  this->NextStep =
+    std::min(this->FullStep, vtkCVTJumpFlooding::NextPowerOfTwo(maximumRadius + 0.5));
   return true;
 }
 
