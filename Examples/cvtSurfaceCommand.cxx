@@ -119,10 +119,12 @@ int RunRemesh(const Options& options)
               << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
               << "  input topology              " << topology(sites, "Input") << "\n"
               << "  remesh topology             " << topology(remesh, "") << "\n"
+              << "  sites added for topology    " << Field(sites, "AddedSites") << "\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
               << Field(remesh, "SplitVertices") << " pinched vertices split, "
+              << Field(remesh, "SeparatedVertices") << " coincident vertices separated, "
               << Field(remesh, "FlippedEdges") << " edges flipped for angles, "
               << Field(remesh, "ValenceFlips") << " for valence, " << Field(remesh, "MovedVertices")
               << " vertices moved)\n"

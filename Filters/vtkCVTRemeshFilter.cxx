@@ -28,12 +28,26 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 vtkStandardNewMacro(vtkCVTRemeshFilter);
 
 namespace
 {
+/// Rounds of sites added for the remesh's topology, and the Lloyd iterations after each (more
+/// would let the cells wrap round thin parts again).
+constexpr int MaximumTopologyRounds = 8;
+constexpr int TopologyRoundIterations = 3;
+
+/// How far a remesh's topology is from the input's: 0 when the same.
+int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
+{
+  return std::abs(a.Components - b.Components) + std::abs(a.Genus - b.Genus) +
+    std::abs(a.BoundaryLoops - b.BoundaryLoops) +
+    std::abs(a.EulerCharacteristic - b.EulerCharacteristic);
+}
+
 /// The cleaned, triangulated input (coincident points merged, polygons and strips split).
 vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
 {
@@ -246,18 +260,61 @@ bool vtkCVTRemeshFilter::Compute(
 
   const double optimizeSeconds = since(stage);
   stage = Clock::now();
+  const std::vector<int> labels = engine.GetPointLabels(); // of the optimised sites
 
   // --- The dual: the remesh's vertices are the sites' nearest surface points. The sites
   // themselves stay where the CVT put them (slightly inside curved surfaces: the centroids of
-  // their restricted cells), which is what the energy is minimal for.
+  // their restricted cells), which is what the energy is minimal for. A cell part that is not
+  // a disk (a ring round a tube thinner than the cells, a cell round a small hole or handle),
+  // or two parts that meet along several curves (round a thin part), leave the dual without
+  // the triangles that would keep what they wrap. There the remesh gets more vertices: sites
+  // are added that cut such parts into disks and a few Lloyd iterations settle them, until
+  // the restricted cells have the closed-ball property (the restricted Delaunay triangulation
+  // then has the surface's topology) or the rounds run out. The CVT's own sites, the output,
+  // stay as optimised.
+  // The remesh kept is the first whose topology is the input's, else the closest one.
   cvt::RestrictedDual dual;
-  if (!engine.ComputeDual(dual))
+  cvt::Remesh remesh;
+  cvt::MeshTopology remeshTopology;
+  int addedSites = 0, remeshMismatch = std::numeric_limits<int>::max();
+  cvt::OptimizerResult refined = result;
+  for (int round = 0;; ++round)
   {
-    vtkErrorMacro("The restricted Delaunay triangulation failed: " << engine.GetLastError() << ".");
-    return false;
+    if (!engine.ComputeDual(dual))
+    {
+      vtkErrorMacro(
+        "The restricted Delaunay triangulation failed: " << engine.GetLastError() << ".");
+      return false;
+    }
+    cvt::Remesh candidate = cvt::BuildRemesh(dual, inputTopology.Loops.size(), 8, &mesh);
+    const cvt::MeshTopology topology =
+      cvt::ComputeMeshTopology(static_cast<int>(candidate.SiteIds.size()), candidate.Triangles);
+    const int mismatch = TopologyMismatch(topology, inputTopology);
+    if (mismatch < remeshMismatch)
+    {
+      remesh = std::move(candidate);
+      remeshTopology = topology;
+      remeshMismatch = mismatch;
+      addedSites = static_cast<int>((refined.Sites.size() - result.Sites.size()) / 3);
+    }
+    std::vector<double> cuts = dual.SplitPoints;
+    cuts.insert(cuts.end(), dual.WrapSplitPoints.begin(), dual.WrapSplitPoints.end());
+    if (mismatch == 0 || cuts.empty() || round == MaximumTopologyRounds || this->GetAbortExecute())
+    {
+      break;
+    }
+    cvt::SiteState more{ refined.Sites, {} };
+    more.Sites.insert(more.Sites.end(), cuts.begin(), cuts.end());
+    cvt::OptimizerOptions settle;
+    settle.MaximumNumberOfIterations = TopologyRoundIterations;
+    if (!cvt::RunLloyd(restricted, more, settle, nullptr, refined, error))
+    {
+      vtkErrorMacro(
+        "The surface CVT failed: " << (error.empty() ? engine.GetLastError() : error) << ".");
+      return false;
+    }
   }
-  FillLabels(labelsOut, triangles, mesh, engine.GetPointLabels());
-  const cvt::Remesh remesh = cvt::BuildRemesh(dual, inputTopology.Loops.size(), 8, &mesh);
+  FillLabels(labelsOut, triangles, mesh, labels);
   const cvt::CellSums& sums = result.Sums;
   const std::vector<double>& sites = result.Sites;
 
@@ -272,6 +329,7 @@ bool vtkCVTRemeshFilter::Compute(
       std::to_string(vtkSMPTools::GetEstimatedNumberOfThreads()) + " threads (" +
       vtkSMPTools::GetBackend() + ")");
   AddTopology(fields, "Input", inputTopology);
+  cvtvtk::AddFieldValue(fields, "AddedSites", addedSites);
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -317,13 +375,10 @@ bool vtkCVTRemeshFilter::Compute(
   cvtvtk::AddFieldValue(remeshFields, "FlippedEdges", remesh.FlippedEdges);
   cvtvtk::AddFieldValue(remeshFields, "ValenceFlips", remesh.ValenceFlips);
   cvtvtk::AddFieldValue(remeshFields, "MovedVertices", remesh.MovedVertices);
-  const cvt::MeshTopology remeshTopology =
-    cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  cvtvtk::AddFieldValue(remeshFields, "SeparatedVertices", remesh.SeparatedVertices);
   AddTopology(remeshFields, "", remeshTopology);
   AddTopology(remeshFields, "Input", inputTopology);
-  if (remeshTopology.Components != inputTopology.Components ||
-    remeshTopology.Genus != inputTopology.Genus ||
-    remeshTopology.BoundaryLoops != inputTopology.BoundaryLoops)
+  if (remeshMismatch != 0)
   {
     vtkWarningMacro("The remesh's topology differs from the input's ("
       << remeshTopology.Components << " parts, genus " << remeshTopology.Genus << ", "

@@ -26,6 +26,7 @@ struct Remesh
   int FlippedEdges = 0;                  // diagonals flipped to widen thin triangles
   int ValenceFlips = 0;                  // diagonals flipped to bring valences closer to 6
   int MovedVertices = 0;                 // free vertices of thin triangles moved along the surface
+  int SeparatedVertices = 0;             // vertices at one place moved apart (split copies)
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface

@@ -16,7 +16,6 @@
 
 namespace cvt
 {
-
 namespace
 {
 /// A vertex of a clipped triangle. Label names the edge to the next vertex: -1 - e for edge e
@@ -58,6 +57,7 @@ struct SiteContact
   double Segments[3][6];
   bool TouchesBorder; // one of the segments is on the mesh's border (not a feature line)
   double Area;        // of this piece of the cell
+  double Centroid[3]; // of this piece of the cell
   int EdgeMask;       // bit e: the piece runs along edge e of its triangle (length > 0)
   int CornerMask;     // bit k: the piece holds corner k of its triangle
 };
@@ -120,6 +120,8 @@ struct RestrictedVoronoi::Internals
   void WholeTriangle(int t, Polygon& polygon) const;
   void Barycentric(int t, const double* p, double* lambda) const;
   void Contact(int t, int site, const Polygon& polygon, SiteContact& contact) const;
+  void FindNonDiskParts(const std::vector<const SiteContact*>& pieces,
+    const std::vector<int>& vertexOfPiece, RestrictedDual& dual) const;
 };
 
 //------------------------------------------------------------------------------
@@ -402,6 +404,7 @@ void RestrictedVoronoi::Internals::Contact(
   contact.EdgeMask = 0;
   contact.CornerMask = 0;
   contact.Area = 0.0;
+  std::fill(contact.Centroid, contact.Centroid + 3, 0.0);
   for (int v = 1; v + 1 < polygon.Size; ++v)
   {
     const double* p0 = polygon.V[0].P;
@@ -411,7 +414,17 @@ void RestrictedVoronoi::Internals::Contact(
       polygon.V[v + 1].P[2] - p0[2] };
     double cross[3];
     Cross(e1, e2, cross);
-    contact.Area += 0.5 * std::sqrt(Dot(cross, cross));
+    const double area = 0.5 * std::sqrt(Dot(cross, cross));
+    contact.Area += area;
+    for (int k = 0; k < 3; ++k)
+    {
+      contact.Centroid[k] += area * (p0[k] + polygon.V[v].P[k] + polygon.V[v + 1].P[k]) / 3.0;
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    contact.Centroid[k] =
+      contact.Area > 0.0 ? contact.Centroid[k] / contact.Area : polygon.V[0].P[k];
   }
   // The projection onto the plane, when it falls inside the (convex) polygon.
   const double height = (s[0] - polygon.V[0].P[0]) * n[0] + (s[1] - polygon.V[0].P[1]) * n[1] +
@@ -478,6 +491,122 @@ void RestrictedVoronoi::Internals::Contact(
       double* segment = contact.Segments[contact.SegmentCount++];
       std::copy(a.P, a.P + 3, segment);
       std::copy(b.P, b.P + 3, segment + 3);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The Euler characteristic of a cell part, from its pieces alone: the part is the disjoint
+// union of its parts inside triangles, inside mesh edges and at mesh points, and the Euler
+// characteristic (with compact support) adds up over such a union. A convex piece without its
+// triangle's border counts 1 - (its edge segments without their ends) - (its corners); an edge
+// segment counts 1 - (the edge's end points it holds); a point counts 1.
+void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const SiteContact*>& pieces,
+  const std::vector<int>& vertexOfPiece, RestrictedDual& dual) const
+{
+  const size_t vertexCount = dual.Sites.size();
+  dual.EulerCharacteristic.assign(vertexCount, 0);
+  dual.SplitPoints.clear();
+  dual.WrapSplitPoints.clear();
+  // (part, first point, second point or -1, what it adds), each mesh edge or point once.
+  std::vector<std::array<int, 4>> shared;
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    const SiteContact& c = *pieces[p];
+    const auto& tri = this->Mesh.Triangles[c.Triangle];
+    const int part = vertexOfPiece[p];
+    int euler = 1;
+    for (int k = 0; k < 3; ++k)
+    {
+      if ((c.CornerMask >> k) & 1)
+      {
+        euler -= 1;
+        shared.push_back({ part, tri[k], -1, 1 });
+      }
+      if ((c.EdgeMask >> k) & 1)
+      {
+        const int ends = ((c.CornerMask >> k) & 1) + ((c.CornerMask >> ((k + 1) % 3)) & 1);
+        euler -= 1 - ends;
+        shared.push_back({ part, std::min(tri[k], tri[(k + 1) % 3]),
+          std::max(tri[k], tri[(k + 1) % 3]), 1 - ends });
+      }
+    }
+    dual.EulerCharacteristic[part] += euler;
+  }
+  std::sort(shared.begin(), shared.end());
+  for (size_t s = 0; s < shared.size(); ++s)
+  {
+    const auto& a = shared[s];
+    if (s == 0 || a[0] != shared[s - 1][0] || a[1] != shared[s - 1][1] || a[2] != shared[s - 1][2])
+    {
+      dual.EulerCharacteristic[a[0]] += a[3];
+    }
+  }
+  // Where sites would cut each non-disk part into disks: 1 - chi of its pieces' centroids
+  // (at least one), each farthest from the part's nearest point and those already taken.
+  // Parts that are not disks, and parts whose shared border has several pieces (they wrap
+  // round a thin part and meet on both sides: their edge has more than two triangles).
+  std::vector<char> notDisk(vertexCount, 0), wrapping(vertexCount, 0);
+  for (size_t v = 0; v < vertexCount; ++v)
+  {
+    notDisk[v] = dual.EulerCharacteristic[v] != 1;
+  }
+  std::vector<std::uint64_t> edges;
+  for (const auto& t : dual.Triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint64_t a = static_cast<std::uint64_t>(std::min(t[k], t[(k + 1) % 3]));
+      const std::uint64_t b = static_cast<std::uint64_t>(std::max(t[k], t[(k + 1) % 3]));
+      edges.push_back((a << 32) | b);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t e = 0; e + 2 < edges.size(); ++e)
+  {
+    if (edges[e] == edges[e + 2])
+    {
+      wrapping[edges[e] >> 32] = wrapping[edges[e] & 0xffffffffu] = 1;
+    }
+  }
+  // Where sites would cut those parts: centroids of their pieces, 3 (1 - chi) for a part that
+  // is not a disk (at least 3: a ring needs three cells round it to make triangles), 2 for
+  // the others, each farthest from the part's nearest point and from those already taken.
+  std::vector<std::vector<int>> piecesOfPart(vertexCount);
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    if (notDisk[vertexOfPiece[p]] || wrapping[vertexOfPiece[p]])
+    {
+      piecesOfPart[vertexOfPiece[p]].push_back(static_cast<int>(p));
+    }
+  }
+  for (size_t v = 0; v < vertexCount; ++v)
+  {
+    const std::vector<int>& own = piecesOfPart[v];
+    if (own.empty())
+    {
+      continue;
+    }
+    std::vector<double>& points = notDisk[v] ? dual.SplitPoints : dual.WrapSplitPoints;
+    const int wanted = notDisk[v] ? 3 * std::max(1, 1 - dual.EulerCharacteristic[v]) : 2;
+    std::vector<double> gap(own.size());
+    for (size_t k = 0; k < own.size(); ++k)
+    {
+      gap[k] = Distance2(pieces[own[k]]->Centroid, &dual.SurfacePoints[3 * v]);
+    }
+    for (int n = 0; n < wanted; ++n)
+    {
+      const size_t far = std::max_element(gap.begin(), gap.end()) - gap.begin();
+      if (!(gap[far] > 0.0))
+      {
+        break;
+      }
+      const double* point = pieces[own[far]]->Centroid;
+      points.insert(points.end(), point, point + 3);
+      for (size_t k = 0; k < own.size(); ++k)
+      {
+        gap[k] = std::min(gap[k], Distance2(pieces[own[k]]->Centroid, point));
+      }
     }
   }
 }
@@ -1201,6 +1330,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         dual.BoundaryTriangles[i], &dual.BoundaryPoints[3 * i], &dual.BoundaryBarycentric[3 * i]);
     }
   }
+  d.FindNonDiskParts(pieces, vertexOfPiece, dual);
   return true;
 }
 

@@ -7,8 +7,8 @@
 #ifndef cvtRestrictedVoronoi_h
 #define cvtRestrictedVoronoi_h
 
+#include "cvtEngine.h"         // for CellSums, EngineErrors
 #include "cvtNumericsModule.h" // for export macro
-#include "cvtEngine.h"     // for CellSums, EngineErrors
 #include "cvtSurfaceMesh.h"
 
 #include <array>
@@ -41,6 +41,15 @@ struct RestrictedDual
   std::vector<double> BoundaryPoints;
   std::vector<int> BoundaryTriangles;
   std::vector<double> BoundaryBarycentric;
+  /// Per vertex: the Euler characteristic of its cell part, 1 for a topological disk. A part
+  /// that is not a disk (a ring around a tube thinner than the cells, a cell around a small
+  /// hole or handle) has no dual triangles to show what it wraps, so the remesh would lose it.
+  std::vector<int> EulerCharacteristic;
+  /// Surface points (x, y, z) where added sites would cut the non-disk parts into disks, and
+  /// where they would split pairs of parts that meet along several curves (round a thin part:
+  /// their dual edge has more than two triangles).
+  std::vector<double> SplitPoints;
+  std::vector<double> WrapSplitPoints;
 };
 
 class CVTNUMERICS_EXPORT RestrictedVoronoi : public EngineErrors

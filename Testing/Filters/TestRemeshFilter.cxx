@@ -100,6 +100,40 @@ vtkSmartPointer<vtkPolyData> Sphere(double radius = 1.0, double x = 0.0)
   return output;
 }
 
+/// A torus of tube radius `tube` about the z axis (ring radius 1), `around` x `along` quads
+/// split in two triangles each.
+vtkSmartPointer<vtkPolyData> Torus(double tube, int around, int along)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  const double pi = 3.14159265358979323846;
+  for (int j = 0; j < along; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const double u = 2 * pi * j / along, v = 2 * pi * i / around;
+      const double r = 1.0 + tube * std::cos(v);
+      points->InsertNextPoint(r * std::cos(u), r * std::sin(u), tube * std::sin(v));
+    }
+  }
+  for (int j = 0; j < along; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const vtkIdType a = j * around + i, b = j * around + (i + 1) % around,
+                      c = ((j + 1) % along) * around + (i + 1) % around,
+                      d = ((j + 1) % along) * around + i;
+      const vtkIdType first[3] = { a, d, c }, second[3] = { a, c, b };
+      triangles->InsertNextCell(3, first);
+      triangles->InsertNextCell(3, second);
+    }
+  }
+  auto torus = vtkSmartPointer<vtkPolyData>::New();
+  torus->SetPoints(points);
+  torus->SetPolys(triangles);
+  return torus;
+}
+
 struct RemeshRun
 {
   vtkNew<vtkCVTRemeshFilter> Filter;
@@ -173,6 +207,27 @@ TEST(RemeshFilter, GenusTwoAndTwoPartsKeepTheirTopology)
   RemeshRun run(both->GetOutput(), 300, 60);
   ASSERT_TRUE(run.Status) << run.Log->Errors;
   ExpectTopology(run.Remesh(), 2, 0, 0);
+}
+
+TEST(RemeshFilter, ThinTubeKeepsItsGenusWithAddedSites)
+{
+  // A torus whose tube (circumference 0.25) is thinner than the cells of 40 sites (about 0.4
+  // across): optimised cells are rings round the tube, whose dual has no triangles. Sites are
+  // added to the remesh until every cell is a disk; the CVT's own sites stay 40.
+  RemeshRun run(Torus(0.04, 16, 160), 40, 60);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 1, 1, 0);
+  EXPECT_EQ(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_EQ(sites->GetNumberOfPoints(), 40);
+  EXPECT_GT(Field(sites, "AddedSites"), 0);
+  EXPECT_EQ(run.Remesh()->GetNumberOfPoints(), 40 + Field(sites, "AddedSites"));
+  // Added vertices have site ids past the CVT's.
+  vtkDataArray* ids = run.Remesh()->GetPointData()->GetArray("SiteId");
+  ASSERT_NE(ids, nullptr);
+  double range[2];
+  ids->GetRange(range);
+  EXPECT_EQ(range[1], 40 + Field(sites, "AddedSites") - 1);
 }
 
 TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)

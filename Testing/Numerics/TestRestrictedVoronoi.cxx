@@ -2,6 +2,7 @@
 // mesh repairs, against independent computations: exact 2D Voronoi polygons for a flat mesh,
 // brute-force nearest sites on a fine quadrature for a curved one.
 #include "cvtExactVoronoi.h"
+#include "cvtGeometry.h"
 #include "cvtProblems.h"
 #include "cvtQuality.h"
 #include "cvtRemesh.h"
@@ -39,6 +40,33 @@ cvt::SurfaceMesh FlatSquare(int n, double lo, double hi)
     for (int i = 0; i < n; ++i)
     {
       const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      mesh.Triangles.push_back({ a, b, c });
+      mesh.Triangles.push_back({ a, c, d });
+    }
+  }
+  return mesh;
+}
+
+/// An open tube of radius `radius` along z from 0 to 1: `around` x `along` quads, two
+/// triangles each.
+cvt::SurfaceMesh Tube(double radius, int around, int along)
+{
+  cvt::SurfaceMesh mesh;
+  for (int j = 0; j <= along; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const double angle = 2.0 * 3.14159265358979323846 * i / around;
+      mesh.Points.insert(mesh.Points.end(),
+        { radius * std::cos(angle), radius * std::sin(angle), static_cast<double>(j) / along });
+    }
+  }
+  for (int j = 0; j < along; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const int a = j * around + i, b = j * around + (i + 1) % around, c = b + around,
+                d = a + around;
       mesh.Triangles.push_back({ a, b, c });
       mesh.Triangles.push_back({ a, c, d });
     }
@@ -384,6 +412,46 @@ TEST(RestrictedVoronoi, OptimisedSphereRemeshIsAClosedOrientedSphere)
   }
 }
 
+TEST(RestrictedVoronoi, DualFindsCellPartsThatAreNotDisks)
+{
+  // Sites on the axis of a tube thinner than their spacing: every cell is a ring (an annulus,
+  // Euler characteristic 0) with no dual triangle; each gets three split points on its ring.
+  const cvt::SurfaceMesh tube = Tube(0.05, 24, 40);
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(tube));
+  ASSERT_TRUE(engine.SetSites({ 0, 0, 0.125, 0, 0, 0.375, 0, 0, 0.625, 0, 0, 0.875 }));
+  cvt::RestrictedDual dual;
+  ASSERT_TRUE(engine.ComputeDual(dual));
+  ASSERT_EQ(dual.EulerCharacteristic.size(), 4u);
+  for (int euler : dual.EulerCharacteristic)
+  {
+    EXPECT_EQ(euler, 0);
+  }
+  EXPECT_TRUE(dual.Triangles.empty());
+  ASSERT_EQ(dual.SplitPoints.size(), 3u * 3u * 4u);
+  for (size_t p = 0; p < dual.SplitPoints.size(); p += 3)
+  {
+    EXPECT_NEAR(std::hypot(dual.SplitPoints[p], dual.SplitPoints[p + 1]), 0.05, 0.005);
+  }
+  // One site on a sphere: its cell is the whole sphere (2); sites on a flat square: disks (1).
+  ASSERT_TRUE(engine.SetMesh(Sphere(2)));
+  ASSERT_TRUE(engine.SetSites({ 0.1, 0.2, 0.3 }));
+  ASSERT_TRUE(engine.ComputeDual(dual));
+  ASSERT_EQ(dual.EulerCharacteristic.size(), 1u);
+  EXPECT_EQ(dual.EulerCharacteristic[0], 2);
+  EXPECT_EQ(dual.SplitPoints.size(), 3u * 3u); // 3 (1 - 2), at least 3
+  ASSERT_TRUE(engine.SetMesh(FlatSquare(12, 0.0, 1.0)));
+  ASSERT_TRUE(engine.SetSites({ 0.2, 0.3, 0, 0.7, 0.2, 0, 0.5, 0.8, 0, 0.45, 0.5, 0.1 }));
+  ASSERT_TRUE(engine.ComputeDual(dual));
+  ASSERT_EQ(dual.EulerCharacteristic.size(), 4u);
+  for (int euler : dual.EulerCharacteristic)
+  {
+    EXPECT_EQ(euler, 1);
+  }
+  EXPECT_TRUE(dual.SplitPoints.empty());
+  EXPECT_TRUE(dual.WrapSplitPoints.empty());
+}
+
 TEST(RestrictedVoronoi, OpenSquareRemeshKeepsItsBorder)
 {
   const cvt::SurfaceMesh mesh = FlatSquare(20, 0.0, 1.0);
@@ -436,6 +504,13 @@ TEST(RestrictedVoronoi, RemeshOfThinPartsIsManifold)
   ASSERT_EQ(remesh.SiteIds.size(), 8u); // 7 sites, site 0 twice
   EXPECT_EQ(remesh.SiteIds[7], 0);
   EXPECT_EQ(remesh.Points.size(), 3 * remesh.SiteIds.size());
+  // The two copies of site 0 are moved apart (towards their own tetrahedra), so merging
+  // coincident points downstream cannot pinch the remesh again.
+  EXPECT_EQ(remesh.SeparatedVertices, 2);
+  const int first = static_cast<int>(
+    std::find(remesh.SiteIds.begin(), remesh.SiteIds.end(), 0) - remesh.SiteIds.begin());
+  ASSERT_LT(first, 7);
+  EXPECT_GT(std::sqrt(cvt::Distance2(&remesh.Points[3 * first], &remesh.Points[3 * 7])), 0.05);
   EXPECT_EQ(remesh.SourceTriangles.size(), remesh.SiteIds.size());
   const cvt::MeshTopology parts = cvt::ComputeMeshTopology(8, remesh.Triangles);
   EXPECT_EQ(parts.Components, 2);
