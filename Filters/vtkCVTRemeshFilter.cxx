@@ -273,13 +273,14 @@ bool vtkCVTRemeshFilter::Compute(
   // then has the surface's topology) or the rounds run out. The CVT's own sites, the output,
   // stay as optimised.
   // The remesh kept is the first whose topology is the input's, else the closest one.
-  cvt::RestrictedDual dual;
   cvt::Remesh remesh;
   cvt::MeshTopology remeshTopology;
   int addedSites = 0, remeshMismatch = std::numeric_limits<int>::max();
-  cvt::OptimizerResult refined = result;
+  cvt::OptimizerResult refined; // the sites of the remesh: the CVT's, then those added
+  refined.Sites = result.Sites;
   for (int round = 0;; ++round)
   {
+    cvt::RestrictedDual dual;
     if (!engine.ComputeDual(dual))
     {
       vtkErrorMacro(
@@ -297,14 +298,13 @@ bool vtkCVTRemeshFilter::Compute(
       remeshMismatch = mismatch;
       addedSites = static_cast<int>((refined.Sites.size() - result.Sites.size()) / 3);
     }
-    std::vector<double> cuts = dual.SplitPoints;
-    cuts.insert(cuts.end(), dual.WrapSplitPoints.begin(), dual.WrapSplitPoints.end());
-    if (mismatch == 0 || cuts.empty() || round == MaximumTopologyRounds || this->GetAbortExecute())
+    if (mismatch == 0 || dual.SplitPoints.empty() || round == MaximumTopologyRounds ||
+      this->GetAbortExecute())
     {
       break;
     }
     cvt::SiteState more{ refined.Sites, {} };
-    more.Sites.insert(more.Sites.end(), cuts.begin(), cuts.end());
+    more.Sites.insert(more.Sites.end(), dual.SplitPoints.begin(), dual.SplitPoints.end());
     cvt::OptimizerOptions settle;
     settle.MaximumNumberOfIterations = TopologyRoundIterations;
     if (!cvt::RunLloyd(restricted, more, settle, nullptr, refined, error))

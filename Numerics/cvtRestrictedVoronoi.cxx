@@ -16,6 +16,7 @@
 
 namespace cvt
 {
+
 namespace
 {
 /// A vertex of a clipped triangle. Label names the edge to the next vertex: -1 - e for edge e
@@ -507,7 +508,6 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
   const size_t vertexCount = dual.Sites.size();
   dual.EulerCharacteristic.assign(vertexCount, 0);
   dual.SplitPoints.clear();
-  dual.WrapSplitPoints.clear();
   // (part, first point, second point or -1, what it adds), each mesh edge or point once.
   std::vector<std::array<int, 4>> shared;
   for (size_t p = 0; p < pieces.size(); ++p)
@@ -542,40 +542,26 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
       dual.EulerCharacteristic[a[0]] += a[3];
     }
   }
-  // Where sites would cut each non-disk part into disks: 1 - chi of its pieces' centroids
-  // (at least one), each farthest from the part's nearest point and those already taken.
   // Parts that are not disks, and parts whose shared border has several pieces (they wrap
   // round a thin part and meet on both sides: their edge has more than two triangles).
-  std::vector<char> notDisk(vertexCount, 0), wrapping(vertexCount, 0);
-  for (size_t v = 0; v < vertexCount; ++v)
+  std::vector<char> wrapping(vertexCount, 0);
+  const EdgeTable edges(dual.Triangles);
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
   {
-    notDisk[v] = dual.EulerCharacteristic[v] != 1;
-  }
-  std::vector<std::uint64_t> edges;
-  for (const auto& t : dual.Triangles)
-  {
-    for (int k = 0; k < 3; ++k)
+    const EdgeTable::Range uses = edges.Edge(e);
+    if (uses.size() > 2)
     {
-      const std::uint64_t a = static_cast<std::uint64_t>(std::min(t[k], t[(k + 1) % 3]));
-      const std::uint64_t b = static_cast<std::uint64_t>(std::max(t[k], t[(k + 1) % 3]));
-      edges.push_back((a << 32) | b);
+      wrapping[uses.Key() >> 32] = wrapping[uses.Key() & 0xffffffffu] = 1;
     }
   }
-  std::sort(edges.begin(), edges.end());
-  for (size_t e = 0; e + 2 < edges.size(); ++e)
-  {
-    if (edges[e] == edges[e + 2])
-    {
-      wrapping[edges[e] >> 32] = wrapping[edges[e] & 0xffffffffu] = 1;
-    }
-  }
+  const auto notDisk = [&dual](size_t v) { return dual.EulerCharacteristic[v] != 1; };
   // Where sites would cut those parts: centroids of their pieces, 3 (1 - chi) for a part that
   // is not a disk (at least 3: a ring needs three cells round it to make triangles), 2 for
   // the others, each farthest from the part's nearest point and from those already taken.
   std::vector<std::vector<int>> piecesOfPart(vertexCount);
   for (size_t p = 0; p < pieces.size(); ++p)
   {
-    if (notDisk[vertexOfPiece[p]] || wrapping[vertexOfPiece[p]])
+    if (notDisk(vertexOfPiece[p]) || wrapping[vertexOfPiece[p]])
     {
       piecesOfPart[vertexOfPiece[p]].push_back(static_cast<int>(p));
     }
@@ -587,8 +573,7 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
     {
       continue;
     }
-    std::vector<double>& points = notDisk[v] ? dual.SplitPoints : dual.WrapSplitPoints;
-    const int wanted = notDisk[v] ? 3 * std::max(1, 1 - dual.EulerCharacteristic[v]) : 2;
+    const int wanted = notDisk(v) ? 3 * std::max(1, 1 - dual.EulerCharacteristic[v]) : 2;
     std::vector<double> gap(own.size());
     for (size_t k = 0; k < own.size(); ++k)
     {
@@ -602,7 +587,7 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
         break;
       }
       const double* point = pieces[own[far]]->Centroid;
-      points.insert(points.end(), point, point + 3);
+      dual.SplitPoints.insert(dual.SplitPoints.end(), point, point + 3);
       for (size_t k = 0; k < own.size(); ++k)
       {
         gap[k] = std::min(gap[k], Distance2(pieces[own[k]]->Centroid, point));

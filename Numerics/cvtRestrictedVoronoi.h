@@ -46,10 +46,9 @@ struct RestrictedDual
   /// hole or handle) has no dual triangles to show what it wraps, so the remesh would lose it.
   std::vector<int> EulerCharacteristic;
   /// Surface points (x, y, z) where added sites would cut the non-disk parts into disks, and
-  /// where they would split pairs of parts that meet along several curves (round a thin part:
-  /// their dual edge has more than two triangles).
+  /// split pairs of parts that meet along several curves (round a thin part: their dual edge
+  /// has more than two triangles).
   std::vector<double> SplitPoints;
-  std::vector<double> WrapSplitPoints;
 };
 
 class CVTNUMERICS_EXPORT RestrictedVoronoi : public EngineErrors

@@ -449,7 +449,6 @@ TEST(RestrictedVoronoi, DualFindsCellPartsThatAreNotDisks)
     EXPECT_EQ(euler, 1);
   }
   EXPECT_TRUE(dual.SplitPoints.empty());
-  EXPECT_TRUE(dual.WrapSplitPoints.empty());
 }
 
 TEST(RestrictedVoronoi, OpenSquareRemeshKeepsItsBorder)
