@@ -375,6 +375,7 @@ bool vtkCVTRemeshFilter::Compute(
   cvtvtk::AddFieldValue(remeshFields, "FlippedEdges", remesh.FlippedEdges);
   cvtvtk::AddFieldValue(remeshFields, "ValenceFlips", remesh.ValenceFlips);
   cvtvtk::AddFieldValue(remeshFields, "MovedVertices", remesh.MovedVertices);
+  cvtvtk::AddFieldValue(remeshFields, "CollapsedEdges", remesh.CollapsedEdges);
   cvtvtk::AddFieldValue(remeshFields, "SeparatedVertices", remesh.SeparatedVertices);
   AddTopology(remeshFields, "", remeshTopology);
   AddTopology(remeshFields, "Input", inputTopology);

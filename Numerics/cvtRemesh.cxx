@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <map>
 #include <unordered_map>
+#include <utility>
 
 #include "cvtGeometry.h"
 #include "cvtPointCloud.h"
@@ -18,6 +20,10 @@ namespace
 {
 /// Below this angle (radians: 10 degrees) a triangle of pinned vertices is a sliver.
 constexpr double MinimumBorderAngle = 10.0 * 3.14159265358979323846 / 180.0;
+
+/// A triangle with a corner under this angle (radians: 30 degrees) is thin: the repairs below
+/// (flips, moves, collapses) aim to widen it.
+constexpr double ThinCorner = 30.0 * 3.14159265358979323846 / 180.0;
 
 /// The angles (radians) of triangle p0 p1 p2 at its three corners.
 void CornerAngles(const double* p0, const double* p1, const double* p2, double angle[3])
@@ -175,13 +181,13 @@ int FlipEdges(const std::vector<double>& points, const std::vector<char>& pinned
 
 /// Restricted Delaunay triangles of cells cut by a border or a crease can be thin where the
 /// other diagonal of the same four vertices is not: flips (within 15 degrees of coplanar) that
-/// raise the pair's smallest angle.
+/// raise the smallest angle of pairs whose smallest angle is under `below` (radians).
 int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>& pinned,
-  std::vector<std::array<int, 3>>& triangles)
+  std::vector<std::array<int, 3>>& triangles, double below = 4.0)
 {
   return FlipEdges(points, pinned, triangles, 15.0,
-    [](const EdgeFlip& flip, const std::vector<int>&, const std::vector<char>&)
-    { return flip.SmallestAfter > flip.SmallestBefore + 1e-9; });
+    [below](const EdgeFlip& flip, const std::vector<int>&, const std::vector<char>&)
+    { return flip.SmallestBefore < below && flip.SmallestAfter > flip.SmallestBefore + 1e-9; });
 }
 
 /// Flips (within 10 degrees of coplanar) that bring the four vertices' valences closer to 6
@@ -191,7 +197,6 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
 int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<char>& pinned,
   std::vector<std::array<int, 3>>& triangles)
 {
-  const double wideEnough = 30.0 * 3.14159265358979323846 / 180.0;
   return FlipEdges(points, pinned, triangles, 10.0,
     [&](const EdgeFlip& f, const std::vector<int>& valence, const std::vector<char>& onBorder)
     {
@@ -205,17 +210,102 @@ int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<c
         deviation(f.C, of(f.C)) + deviation(f.D, of(f.D));
       const int after = deviation(f.A, of(f.A) - 1) + deviation(f.B, of(f.B) - 1) +
         deviation(f.C, of(f.C) + 1) + deviation(f.D, of(f.D) + 1);
-      return after < before && f.SmallestAfter >= std::min(f.SmallestBefore, wideEnough);
+      return after < before && f.SmallestAfter >= std::min(f.SmallestBefore, ThinCorner);
     });
 }
+
+/// The nearest point of the input surface to a point, for vertices that move along it: the
+/// input's triangle centroids in a k-d tree, and the exact closest point among the triangles of
+/// the nearest few.
+class SurfaceProjector
+{
+public:
+  explicit SurfaceProjector(const SurfaceMesh& surface)
+    : Surface(surface)
+    , Centroids(TriangleCentroids(surface))
+    , Tree(3, Cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) // builds the tree
+  {
+  }
+  SurfaceProjector(const SurfaceProjector&) = delete;
+  SurfaceProjector& operator=(const SurfaceProjector&) = delete;
+
+  /// The nearest point `q` (barycentric `w` in the returned input triangle; -1 if none).
+  int Nearest(const double* p, double q[3], double w[3]) const
+  {
+    constexpr size_t Candidates = 16;
+    std::uint32_t ids[Candidates];
+    double distances[Candidates];
+    const size_t found = this->Tree.knnSearch(p, Candidates, ids, distances);
+    double bestDistance = 1e300;
+    int best = -1;
+    for (size_t c = 0; c < found; ++c)
+    {
+      const auto& tri = this->Surface.Triangles[ids[c]];
+      double candidate[3], weights[3];
+      ClosestPointOnTriangle(p, this->Surface.Point(tri[0]), this->Surface.Point(tri[1]),
+        this->Surface.Point(tri[2]), candidate, weights);
+      const double d = Distance2(candidate, p);
+      if (d < bestDistance)
+      {
+        bestDistance = d;
+        std::copy(candidate, candidate + 3, q);
+        std::copy(weights, weights + 3, w);
+        best = static_cast<int>(ids[c]);
+      }
+    }
+    return best;
+  }
+
+  /// How far the farthest centroid of `triangles` (three points each) is from the surface: a
+  /// change of the remesh must not cut across a crease (the input would then lie far from it).
+  double FarthestCentroid(const std::vector<std::array<const double*, 3>>& triangles) const
+  {
+    double farthest = 0.0;
+    for (const auto& t : triangles)
+    {
+      double c[3], q[3], w[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        c[k] = (t[0][k] + t[1][k] + t[2][k]) / 3.0;
+      }
+      if (this->Nearest(c, q, w) >= 0)
+      {
+        farthest = std::max(farthest, std::sqrt(Distance2(q, c)));
+      }
+    }
+    return farthest;
+  }
+
+private:
+  static std::vector<double> TriangleCentroids(const SurfaceMesh& surface)
+  {
+    std::vector<double> centroids(3 * static_cast<size_t>(surface.NumberOfTriangles()));
+    for (int t = 0; t < surface.NumberOfTriangles(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        centroids[3 * t + k] =
+          (surface.Point(surface.Triangles[t][0])[k] + surface.Point(surface.Triangles[t][1])[k] +
+            surface.Point(surface.Triangles[t][2])[k]) /
+          3.0;
+      }
+    }
+    return centroids;
+  }
+
+  const SurfaceMesh& Surface;
+  std::vector<double> Centroids;
+  PointCloud<3> Cloud{ &Centroids };
+  PointTree<3> Tree;
+};
 
 /// Moves free (not pinned) vertices of triangles with a corner under 30 degrees to the mean of
 /// their neighbours, projected onto the input surface, wherever that raises the smallest angle
 /// around them without turning a triangle over: cells cut by a crease leave a few thin
 /// triangles that no flip mends. Returns the number of vertices moved.
-int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const SurfaceMesh& surface)
+int RelaxThinTriangles(
+  Remesh& remesh, const std::vector<char>& pinned, const SurfaceProjector& projector)
 {
-  const double thin = 30.0 * 3.14159265358979323846 / 180.0;
   const int vertices = static_cast<int>(remesh.SiteIds.size());
   std::vector<std::vector<int>> around(static_cast<size_t>(vertices)); // incident triangles
   for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
@@ -254,82 +344,19 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
   const auto isThin = [&](int v, double& current)
   {
     return !pinned[static_cast<size_t>(v)] && !around[static_cast<size_t>(v)].empty() &&
-      smallestAround(v, point(v), current) && current < thin;
+      smallestAround(v, point(v), current) && current < ThinCorner;
   };
-  // Most remeshes have none: look before building the input's k-d tree.
-  bool any = false;
-  for (int v = 0; v < vertices && !any; ++v)
-  {
-    double current = 0.0;
-    any = isThin(v, current);
-  }
-  if (!any)
-  {
-    return 0;
-  }
-  // The input's triangle centroids in a k-d tree: the projection looks at the nearest few.
-  std::vector<double> centroids(3 * static_cast<size_t>(surface.NumberOfTriangles()));
-  for (int t = 0; t < surface.NumberOfTriangles(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      centroids[3 * t + k] =
-        (surface.Point(surface.Triangles[t][0])[k] + surface.Point(surface.Triangles[t][1])[k] +
-          surface.Point(surface.Triangles[t][2])[k]) /
-        3.0;
-    }
-  }
-  PointCloud<3> cloud;
-  cloud.Points = &centroids;
-  PointTree<3> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-  tree.buildIndex();
-  // Nearest point of the input among the triangles of the 16 nearest centroids.
-  const auto nearestOnSurface = [&](const double* p, double q[3], double w[3])
-  {
-    constexpr size_t Candidates = 16;
-    std::uint32_t ids[Candidates];
-    double distances[Candidates];
-    const size_t found = tree.knnSearch(p, Candidates, ids, distances);
-    double bestDistance = 1e300;
-    int best = -1;
-    for (size_t c = 0; c < found; ++c)
-    {
-      const auto& tri = surface.Triangles[ids[c]];
-      double candidate[3], weights[3];
-      ClosestPointOnTriangle(
-        p, surface.Point(tri[0]), surface.Point(tri[1]), surface.Point(tri[2]), candidate, weights);
-      const double d = Distance2(candidate, p);
-      if (d < bestDistance)
-      {
-        bestDistance = d;
-        std::copy(candidate, candidate + 3, q);
-        std::copy(weights, weights + 3, w);
-        best = static_cast<int>(ids[c]);
-      }
-    }
-    return best;
-  };
-  // How far the centroids of v's triangles are from the input, with v at `at`: a move must
-  // not cut across a crease (the input would then lie far from the remesh).
+  // v's triangles with v at `at`, for the projector's crease check.
   const auto farthestCentroid = [&](int v, const double* at)
   {
-    double farthest = 0.0;
+    std::vector<std::array<const double*, 3>> corners;
     for (int t : around[static_cast<size_t>(v)])
     {
-      double c[3] = { 0.0, 0.0, 0.0 }, q[3], w[3];
-      for (int u : remesh.Triangles[static_cast<size_t>(t)])
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          c[k] += (u == v ? at[k] : point(u)[k]) / 3.0;
-        }
-      }
-      if (nearestOnSurface(c, q, w) >= 0)
-      {
-        farthest = std::max(farthest, std::sqrt(Distance2(q, c)));
-      }
+      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+      corners.push_back({ tri[0] == v ? at : point(tri[0]), tri[1] == v ? at : point(tri[1]),
+        tri[2] == v ? at : point(tri[2]) });
     }
-    return farthest;
+    return projector.FarthestCentroid(corners);
   };
   int moved = 0;
   for (int round = 0; round < 3; ++round)
@@ -363,7 +390,7 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
         m /= count;
       }
       double best[3], bestWeights[3];
-      const int bestTriangle = nearestOnSurface(mean, best, bestWeights);
+      const int bestTriangle = projector.Nearest(mean, best, bestWeights);
       double after = 0.0;
       if (bestTriangle < 0 || !smallestAround(v, best, after) || after <= current + 1e-6 ||
         farthestCentroid(v, best) > 1.1 * farthestCentroid(v, point(v)) + 1e-12)
@@ -383,6 +410,264 @@ int RelaxThinTriangles(Remesh& remesh, const std::vector<char>& pinned, const Su
     }
   }
   return moved;
+}
+
+/// Collapses an edge of each triangle with a corner under 30 degrees where that raises the
+/// smallest angle around it: cells of a part about as thin as they are wide, or cut by a crease
+/// or a border, leave a vertex so close to a neighbour (needles) or to the line of two others
+/// (caps) that neither a flip nor a move mends it. A collapse keeps the surface's topology (the
+/// link condition; border vertices only go along the border, crease vertices only to another
+/// crease vertex), turns no triangle over (60 degrees at most), makes no edge more than 1.3
+/// times the longest around it and does not cut across a crease (its triangles' centroids stay
+/// within 5% of that edge of the input, or no farther than before). The removed vertices stay
+/// in `remesh` but in no triangle. Returns the number of edges collapsed.
+int CollapseThinTriangles(
+  Remesh& remesh, const std::vector<char>& pinned, const SurfaceProjector& projector)
+{
+  const size_t vertices = remesh.SiteIds.size();
+  std::vector<std::vector<int>> around(vertices); // incident triangles, dead ones included
+  std::vector<char> alive(remesh.Triangles.size(), 1), onBorder(vertices, 0);
+  std::unordered_map<std::uint64_t, int> directed;
+  for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      around[static_cast<size_t>(remesh.Triangles[t][e])].push_back(t);
+      directed[DirectedKey(remesh.Triangles[t][e], remesh.Triangles[t][(e + 1) % 3])] = t;
+    }
+  }
+  for (const auto& t : remesh.Triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      if (!directed.count(DirectedKey(t[(e + 1) % 3], t[e])))
+      {
+        onBorder[static_cast<size_t>(t[e])] = onBorder[static_cast<size_t>(t[(e + 1) % 3])] = 1;
+      }
+    }
+  }
+  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
+  // Triangle t's corners with vertex `from` at vertex `to`'s place.
+  const auto corners = [&](int t, int from, int to)
+  {
+    std::array<const double*, 3> p;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int v = remesh.Triangles[static_cast<size_t>(t)][k];
+      p[k] = point(v == from ? to : v);
+    }
+    return p;
+  };
+  const auto smallestAngle = [](const std::array<const double*, 3>& p)
+  {
+    double angle[3];
+    CornerAngles(p[0], p[1], p[2], angle);
+    return *std::min_element(angle, angle + 3);
+  };
+  const auto longestEdge = [](const std::array<const double*, 3>& p)
+  {
+    return std::sqrt(
+      std::max({ Distance2(p[0], p[1]), Distance2(p[1], p[2]), Distance2(p[2], p[0]) }));
+  };
+  const auto contains = [&remesh](int t, int v)
+  {
+    const auto& tri = remesh.Triangles[static_cast<size_t>(t)];
+    return tri[0] == v || tri[1] == v || tri[2] == v;
+  };
+  const auto neighbours = [&](int v)
+  {
+    std::vector<int> n;
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      for (int w : remesh.Triangles[static_cast<size_t>(t)])
+      {
+        if (alive[static_cast<size_t>(t)] && w != v)
+        {
+          n.push_back(w);
+        }
+      }
+    }
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+    return n;
+  };
+  // The smallest angle around v once u goes to v's place, or -1 where that collapse is not
+  // allowed.
+  const auto collapsedSmallest = [&](int u, int v)
+  {
+    std::vector<int> onEdge, moving, staying; // triangles on (u, v), of u only, of v only
+    for (int t : around[static_cast<size_t>(u)])
+    {
+      if (alive[static_cast<size_t>(t)])
+      {
+        (contains(t, v) ? onEdge : moving).push_back(t);
+      }
+    }
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      if (alive[static_cast<size_t>(t)] && !contains(t, u))
+      {
+        staying.push_back(t);
+      }
+    }
+    const bool borderEdge = onEdge.size() == 1;
+    // A border vertex goes only along its border, one on a crease only to another one.
+    if (onEdge.empty() || onEdge.size() > 2 || (onBorder[static_cast<size_t>(u)] && !borderEdge) ||
+      (pinned[static_cast<size_t>(u)] && !pinned[static_cast<size_t>(v)]))
+    {
+      return -1.0;
+    }
+    // Link condition: u and v share no neighbour but the far corners of their triangles.
+    const std::vector<int> of_u = neighbours(u), of_v = neighbours(v);
+    std::vector<int> shared;
+    std::set_intersection(
+      of_u.begin(), of_u.end(), of_v.begin(), of_v.end(), std::back_inserter(shared));
+    if (shared.size() != onEdge.size())
+    {
+      return -1.0;
+    }
+    double before = 10.0, after = 10.0, longest = 0.0;
+    std::vector<std::array<const double*, 3>> old, changed;
+    for (const auto* set : { &onEdge, &moving, &staying })
+    {
+      for (int t : *set)
+      {
+        old.push_back(corners(t, -1, -1));
+        before = std::min(before, smallestAngle(old.back()));
+        longest = std::max(longest, longestEdge(old.back()));
+      }
+    }
+    for (int t : staying)
+    {
+      changed.push_back(corners(t, -1, -1));
+      after = std::min(after, smallestAngle(changed.back()));
+    }
+    for (int t : moving)
+    {
+      const auto p = corners(t, u, v);
+      double n0[3], n1[3];
+      UnitNormal(point(remesh.Triangles[t][0]), point(remesh.Triangles[t][1]),
+        point(remesh.Triangles[t][2]), n0);
+      UnitNormal(p[0], p[1], p[2], n1);
+      if (Dot(n0, n1) < 0.5 || longestEdge(p) > 1.3 * longest)
+      {
+        return -1.0;
+      }
+      changed.push_back(p);
+      after = std::min(after, smallestAngle(p));
+    }
+    if (after <= before + 1e-6 ||
+      projector.FarthestCentroid(changed) >
+        std::max(1.1 * projector.FarthestCentroid(old), 0.05 * longest))
+    {
+      return -1.0;
+    }
+    return after;
+  };
+  int collapsed = 0;
+  for (int round = 0; round < 3; ++round)
+  {
+    int collapsedThisRound = 0;
+    for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
+    {
+      if (!alive[static_cast<size_t>(t)] || smallestAngle(corners(t, -1, -1)) >= ThinCorner)
+      {
+        continue;
+      }
+      // The collapse of one of its edges (either way) that leaves the widest triangles.
+      int bestFrom = -1, bestTo = -1;
+      double best = -1.0;
+      for (int e = 0; e < 3; ++e)
+      {
+        const int a = remesh.Triangles[t][e], b = remesh.Triangles[t][(e + 1) % 3];
+        for (const auto& uv : { std::make_pair(a, b), std::make_pair(b, a) })
+        {
+          const double smallest = collapsedSmallest(uv.first, uv.second);
+          if (smallest > best)
+          {
+            best = smallest;
+            bestFrom = uv.first;
+            bestTo = uv.second;
+          }
+        }
+      }
+      if (bestFrom < 0)
+      {
+        continue;
+      }
+      for (int k : around[static_cast<size_t>(bestFrom)])
+      {
+        if (alive[static_cast<size_t>(k)])
+        {
+          if (contains(k, bestTo))
+          {
+            alive[static_cast<size_t>(k)] = 0;
+          }
+          else
+          {
+            std::replace(remesh.Triangles[k].begin(), remesh.Triangles[k].end(), bestFrom, bestTo);
+            around[static_cast<size_t>(bestTo)].push_back(k);
+          }
+        }
+      }
+      around[static_cast<size_t>(bestFrom)].clear();
+      ++collapsedThisRound;
+    }
+    collapsed += collapsedThisRound;
+    if (collapsedThisRound == 0)
+    {
+      break;
+    }
+  }
+  size_t last = 0;
+  for (size_t t = 0; t < remesh.Triangles.size(); ++t)
+  {
+    if (alive[t])
+    {
+      remesh.Triangles[last++] = remesh.Triangles[t];
+    }
+  }
+  remesh.Triangles.resize(last);
+  return collapsed;
+}
+
+/// Drops the vertices in no triangle (collapsed ones) and numbers the others in order.
+void DropUnusedVertices(Remesh& remesh)
+{
+  std::vector<int> renumbered(remesh.SiteIds.size(), -1);
+  for (const auto& t : remesh.Triangles)
+  {
+    for (int v : t)
+    {
+      renumbered[static_cast<size_t>(v)] = 0;
+    }
+  }
+  int next = 0;
+  for (size_t v = 0; v < renumbered.size(); ++v)
+  {
+    if (renumbered[v] < 0)
+    {
+      continue;
+    }
+    const size_t to = static_cast<size_t>(next);
+    renumbered[v] = next++;
+    std::copy(&remesh.Points[3 * v], &remesh.Points[3 * v] + 3, &remesh.Points[3 * to]);
+    std::copy(&remesh.SourceBarycentric[3 * v], &remesh.SourceBarycentric[3 * v] + 3,
+      &remesh.SourceBarycentric[3 * to]);
+    remesh.SourceTriangles[to] = remesh.SourceTriangles[v];
+    remesh.SiteIds[to] = remesh.SiteIds[v];
+  }
+  remesh.Points.resize(3 * static_cast<size_t>(next));
+  remesh.SourceBarycentric.resize(3 * static_cast<size_t>(next));
+  remesh.SourceTriangles.resize(static_cast<size_t>(next));
+  remesh.SiteIds.resize(static_cast<size_t>(next));
+  for (auto& t : remesh.Triangles)
+  {
+    for (int& v : t)
+    {
+      v = renumbered[static_cast<size_t>(v)];
+    }
+  }
 }
 
 /// Triangulates a small hole (a loop of at most a few dozen vertices, in the loop's
@@ -696,9 +981,28 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     }
     remesh.FlippedEdges = FlipThinTriangles(remesh.Points, pinned, remesh.Triangles);
     remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles);
-    if (surface)
+    // Most remeshes have no thin triangle left: look before building the input's k-d tree.
+    const bool anyThin = std::any_of(remesh.Triangles.begin(), remesh.Triangles.end(),
+      [&remesh](const std::array<int, 3>& t)
+      {
+        double angle[3];
+        CornerAngles(
+          &remesh.Points[3 * t[0]], &remesh.Points[3 * t[1]], &remesh.Points[3 * t[2]], angle);
+        return *std::min_element(angle, angle + 3) < ThinCorner;
+      });
+    if (surface && anyThin)
     {
-      remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, *surface);
+      const SurfaceProjector projector(*surface);
+      remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, projector);
+      remesh.CollapsedEdges = CollapseThinTriangles(remesh, pinned, projector);
+      if (remesh.CollapsedEdges > 0)
+      {
+        // The triangles a collapse widened may now flip or move to wider ones still.
+        remesh.FlippedEdges +=
+          FlipThinTriangles(remesh.Points, pinned, remesh.Triangles, ThinCorner);
+        remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector);
+        DropUnusedVertices(remesh);
+      }
     }
   }
   // Sheets that meet only at a vertex (a part thinner than the cells, a border touching

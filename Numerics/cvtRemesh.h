@@ -26,6 +26,7 @@ struct Remesh
   int FlippedEdges = 0;                  // diagonals flipped to widen thin triangles
   int ValenceFlips = 0;                  // diagonals flipped to bring valences closer to 6
   int MovedVertices = 0;                 // free vertices of thin triangles moved along the surface
+  int CollapsedEdges = 0;                // edges of thin triangles collapsed (a vertex fewer each)
   int SeparatedVertices = 0;             // vertices at one place moved apart (split copies)
 };
 
@@ -38,7 +39,8 @@ struct Remesh
 /// input's number of boundary loops. Edges of nearly coplanar pairs are then flipped where that
 /// widens thin triangles, or brings valences closer to 6 without a corner under 30 degrees.
 /// Given the input `surface`, free vertices of triangles with a corner under 30 degrees are then
-/// moved along it where that widens them.
+/// moved along it where that widens them, and where that is not enough an edge of theirs is
+/// collapsed (the remesh then has a vertex fewer) if that widens the triangles around it.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 

@@ -255,7 +255,11 @@ TEST(SurfaceFilter, SphereRemeshIsClosedWithEulerCharacteristicTwo)
   cvt->SetMethodToLloyd();
   cvt->Update();
   const MeshCheck mesh = CheckMesh(cvt->GetRemeshOutput());
-  EXPECT_EQ(mesh.Vertices, 150);
+  // Every site is a vertex, but where an edge of a thin triangle was collapsed.
+  const double collapsed =
+    cvt->GetRemeshOutput()->GetFieldData()->GetArray("CollapsedEdges")->GetTuple1(0);
+  EXPECT_LE(collapsed, 3.0);
+  EXPECT_EQ(mesh.Vertices + collapsed, 150);
   EXPECT_EQ(mesh.NonManifoldEdges, 0);
   EXPECT_EQ(mesh.MisorientedEdges, 0);
   EXPECT_EQ(mesh.Euler(), 2);

@@ -721,6 +721,71 @@ TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
   }
 }
 
+TEST(RestrictedVoronoi, RemeshCollapsesEdgesThatNoFlipOrMoveMends)
+{
+  // A 5 x 5 grid on the unit square, its border pinned, with the middle of the bottom side
+  // doubled (two border cells 0.02 apart): their triangle with the grid point above is a needle
+  // of 4.6 degrees there. No flip (the doubled edge is on the border) and no move of the free
+  // vertex above mends it; collapsing the short border edge gives the grid back.
+  std::vector<std::array<double, 3>> points;
+  std::vector<char> pinned;
+  for (int j = 0; j < 5; ++j)
+  {
+    for (int i = 0; i < 5; ++i)
+    {
+      points.push_back({ 0.25 * i, 0.25 * j, 0.0 });
+      pinned.push_back(i == 0 || i == 4 || j == 0 || j == 4);
+    }
+  }
+  points[2] = { 0.49, 0.0, 0.0 };
+  points.push_back({ 0.51, 0.0, 0.0 }); // vertex 25, the double of vertex 2
+  pinned.push_back(1);
+  cvt::RestrictedDual dual = DualAt(points, false, pinned);
+  dual.OnBoundary.assign(pinned.begin(), pinned.end());
+  const auto at = [](int i, int j) { return 5 * j + i; };
+  for (int j = 0; j < 4; ++j)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      // The square right of the double starts at vertex 25.
+      const int lowerLeft = (i == 2 && j == 0) ? 25 : at(i, j);
+      dual.Triangles.push_back({ lowerLeft, at(i + 1, j), at(i + 1, j + 1) });
+      dual.Triangles.push_back({ lowerLeft, at(i + 1, j + 1), at(i, j + 1) });
+    }
+  }
+  dual.Triangles.push_back({ 2, 25, at(2, 1) }); // the needle
+  cvt::SurfaceMesh plane;
+  plane.Points = { -2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0 };
+  plane.Triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+
+  const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
+  EXPECT_EQ(before.CollapsedEdges, 0);
+  EXPECT_LT(cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle, 5.0);
+
+  const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
+  EXPECT_EQ(after.CollapsedEdges, 1);
+  EXPECT_EQ(after.SiteIds.size(), 25u); // one vertex fewer, and none left in no triangle
+  EXPECT_EQ(after.Points.size(), 3 * after.SiteIds.size());
+  EXPECT_EQ(after.Triangles.size(), 32u);
+  EXPECT_GT(cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle, 40.0);
+  const cvt::MeshTopology topology =
+    cvt::ComputeMeshTopology(static_cast<int>(after.SiteIds.size()), after.Triangles);
+  EXPECT_EQ(topology.Components, 1);
+  EXPECT_EQ(topology.BoundaryLoops, 1);
+  EXPECT_EQ(topology.EulerCharacteristic, 1);
+  // The border keeps one of the two doubled vertices, on the border.
+  int doubled = 0;
+  for (size_t v = 0; v < after.SiteIds.size(); ++v)
+  {
+    if (after.SiteIds[v] == 2 || after.SiteIds[v] == 25)
+    {
+      ++doubled;
+      EXPECT_EQ(after.Points[3 * v + 1], 0.0);
+    }
+  }
+  EXPECT_EQ(doubled, 1);
+}
+
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
 {
   // A square of two triangles, one flipped, plus a duplicate, a degenerate and an unused point.
