@@ -276,6 +276,9 @@ bool vtkCVTImageFilter::Compute(
   vtkCVTOpenGLEngine* gpu =
     choice.UseOpenGL ? this->GetOpenGLEngine<vtkCVTOpenGLEngine>() : nullptr;
   cvt::Engine* engine = gpu ? static_cast<cvt::Engine*>(gpu) : &cpu;
+  // Under MPI every rank runs the same optimisation; on the CPU they share its integrals (the
+  // OpenGL engine computes all of them on every rank).
+  const int ranks = gpu ? 1 : cvtvtk::ShareCellSumsAcrossRanks(cpu, outputVector);
   if (gpu)
   {
     gpu->SetAdaptiveStep(this->AdaptiveJumpFlooding);
@@ -309,6 +312,7 @@ bool vtkCVTImageFilter::Compute(
   this->AddQualityFields(fields, grid, result, densityChosen ? density : std::vector<float>());
   cvtvtk::AddFieldString(fields, "Engine", choice.Name);
   cvtvtk::AddFieldString(fields, "EngineReason", choice.Reason);
+  cvtvtk::AddFieldValue(fields, "EngineRanks", ranks); // ranks sharing the cell sums
 
   vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
   labelsOut->SetExtent(image->GetExtent());

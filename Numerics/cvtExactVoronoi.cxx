@@ -144,14 +144,16 @@ public:
 };
 }
 
-std::vector<Polygon> ClippedVoronoiCells(const Grid& grid, const std::vector<double>& sites)
+std::vector<Polygon> ClippedVoronoiCells(
+  const Grid& grid, const std::vector<double>& sites, size_t first, size_t last)
 {
   const size_t n = sites.size() / 2;
+  last = std::min(last, n);
   const Polygon domain = Rectangle(grid.XMin(), grid.XMax(), grid.YMin(), grid.YMax());
   const Buckets buckets(grid, sites);
   const double bucketSide = std::min(buckets.Width, buckets.Height);
   std::vector<Polygon> cells(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), 64,
+  vtkSMPTools::For(static_cast<vtkIdType>(first), static_cast<vtkIdType>(std::max(first, last)), 64,
     [&](vtkIdType begin, vtkIdType end)
     {
       std::vector<size_t> ring;
@@ -391,13 +393,14 @@ CellSums ExactCellSums(
 }
 
 CellSums ExactCellSums(const Grid& grid, const std::vector<double>& sites,
-  const std::vector<float>& density, const DensityTables& tables)
+  const std::vector<float>& density, const DensityTables& tables, size_t first, size_t last)
 {
   const size_t n = sites.size() / 2;
-  const std::vector<Polygon> cells = ClippedVoronoiCells(grid, sites);
+  last = std::min(last, n);
+  const std::vector<Polygon> cells = ClippedVoronoiCells(grid, sites, first, last);
   CellSums sums;
   sums.Resize(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), 64,
+  vtkSMPTools::For(static_cast<vtkIdType>(first), static_cast<vtkIdType>(std::max(first, last)), 64,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)

@@ -4,8 +4,8 @@
 #ifndef cvtExactVoronoi_h
 #define cvtExactVoronoi_h
 
-#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
+#include "cvtNumericsModule.h" // for export macro
 
 #include <vector>
 
@@ -35,9 +35,10 @@ CVTNUMERICS_EXPORT PolygonIntegrals IntegrateVertices(
 /// Keeps the part of `polygon` where a x + b y <= c.
 CVTNUMERICS_EXPORT Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c);
 
-/// The Voronoi cells of all sites (flat x, y) clipped to the grid's domain, one polygon each.
-CVTNUMERICS_EXPORT std::vector<Polygon> ClippedVoronoiCells(
-  const Grid& grid, const std::vector<double>& sites);
+/// The Voronoi cells of all sites (flat x, y) clipped to the grid's domain, one polygon each;
+/// only those of sites first to last - 1 when a range is given (the others stay empty).
+CVTNUMERICS_EXPORT std::vector<Polygon> ClippedVoronoiCells(const Grid& grid,
+  const std::vector<double>& sites, size_t first = 0, size_t last = static_cast<size_t>(-1));
 
 /// Row prefix sums of rho, rho x, rho y and rho |x|^2 over pixel centres (relative to the
 /// grid's origin): the pixels wholly inside a cell cost O(rows) instead of O(pixels).
@@ -54,9 +55,11 @@ struct CVTNUMERICS_EXPORT DensityTables
 /// per pixel).
 CVTNUMERICS_EXPORT CellSums ExactCellSums(
   const Grid& grid, const std::vector<double>& sites, const std::vector<float>& density);
-/// The same with the density's tables made once (the exact engine keeps them).
+/// The same with the density's tables made once (the exact engine keeps them), for the cells
+/// of sites first to last - 1 only when a range is given (the others' sums stay 0).
 CVTNUMERICS_EXPORT CellSums ExactCellSums(const Grid& grid, const std::vector<double>& sites,
-  const std::vector<float>& density, const DensityTables& tables);
+  const std::vector<float>& density, const DensityTables& tables, size_t first = 0,
+  size_t last = static_cast<size_t>(-1));
 
 /// Nearest site of every pixel centre, with a k-d tree, in parallel (ties: either site).
 CVTNUMERICS_EXPORT std::vector<int> NearestSiteLabels(

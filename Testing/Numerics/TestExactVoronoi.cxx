@@ -1,3 +1,4 @@
+#include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
 #include "cvtSampling.h"
 
@@ -118,4 +119,69 @@ TEST(ExactVoronoi, PrefixSumsMatchPixelByPixelClipping)
   }
   // The k-d tree labels agree with brute force.
   EXPECT_EQ(cvt::NearestSiteLabels(grid, sites), cvt::BruteForceLabels(grid, sites));
+}
+
+TEST(ExactEngine, SharedWorkGivesTheSumsOfOneProcessToTheBit)
+{
+  // Two engines play two MPI ranks: part 1 hands its sums over, part 0 adds them to its own.
+  const cvt::Grid grid = cvt::Grid::Square(64, 0.0, 1.0);
+  std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()));
+  for (size_t p = 0; p < density.size(); ++p)
+  {
+    density[p] = 0.5f + static_cast<float>(p % 64) / 64.0f;
+  }
+  const std::vector<double> sites = cvt::SampleSites(grid, density, 101, 3);
+  const size_t n = sites.size() / 2;
+
+  cvt::ExactEngine alone;
+  ASSERT_TRUE(alone.SetDomain(grid, density) && alone.SetSites(sites));
+  cvt::CellSums whole;
+  ASSERT_TRUE(alone.ComputeCellSums(whole));
+
+  std::vector<double> fromPartOne;
+  cvt::ExactEngine partOne, partZero;
+  partOne.ShareWork(1, 2,
+    [&fromPartOne](std::vector<double>& sums)
+    {
+      fromPartOne = sums; // what part one sends; it keeps its own half
+      return true;
+    });
+  partZero.ShareWork(0, 2,
+    [&fromPartOne](std::vector<double>& sums)
+    {
+      for (size_t k = 0; k < sums.size(); ++k)
+      {
+        sums[k] += fromPartOne[k];
+      }
+      return true;
+    });
+  cvt::CellSums ownHalf, combined;
+  ASSERT_TRUE(partOne.SetDomain(grid, density) && partOne.SetSites(sites));
+  ASSERT_TRUE(partOne.ComputeCellSums(ownHalf));
+  // Part one integrated sites n/2 .. n-1 only.
+  ASSERT_EQ(fromPartOne.size(), 4 * n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    EXPECT_EQ(ownHalf.Mass[i] > 0.0, i >= n / 2) << "site " << i;
+  }
+  ASSERT_TRUE(partZero.SetDomain(grid, density) && partZero.SetSites(sites));
+  ASSERT_TRUE(partZero.ComputeCellSums(combined));
+  EXPECT_EQ(combined.Mass, whole.Mass);
+  EXPECT_EQ(combined.MomentX, whole.MomentX);
+  EXPECT_EQ(combined.MomentY, whole.MomentY);
+  EXPECT_EQ(combined.Energy, whole.Energy);
+
+  // A Lloyd step from the combined sums moves the sites as one process does.
+  std::vector<double> movedAlone, movedShared;
+  ASSERT_TRUE(alone.MoveSitesToCentroids() && alone.GetSites(movedAlone));
+  ASSERT_TRUE(partZero.MoveSitesToCentroids() && partZero.GetSites(movedShared));
+  EXPECT_EQ(movedShared, movedAlone);
+
+  // A part whose exchange fails says so.
+  cvt::ExactEngine cutOff;
+  cutOff.ShareWork(0, 2, [](std::vector<double>&) { return false; });
+  ASSERT_TRUE(cutOff.SetDomain(grid, density) && cutOff.SetSites(sites));
+  cvt::CellSums none;
+  EXPECT_FALSE(cutOff.ComputeCellSums(none));
+  EXPECT_NE(cutOff.GetLastError().find("other processes"), std::string::npos);
 }
