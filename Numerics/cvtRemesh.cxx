@@ -10,6 +10,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "cvtEdgeTable.h"
 #include "cvtGeometry.h"
 #include "cvtPointCloud.h"
 
@@ -42,6 +43,14 @@ void CornerAngles(const double* p0, const double* p1, const double* p2, double a
       ? std::acos(std::clamp((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / norms, -1.0, 1.0))
       : 0.0;
   }
+}
+
+/// The smallest corner angle (radians) of triangle p0 p1 p2.
+double SmallestCorner(const double* p0, const double* p1, const double* p2)
+{
+  double angle[3];
+  CornerAngles(p0, p1, p2, angle);
+  return *std::min_element(angle, angle + 3);
 }
 
 std::uint64_t DirectedKey(int a, int b)
@@ -82,11 +91,7 @@ int FlipEdges(const std::vector<double>& points, const std::vector<char>& pinned
   const double flatEnough = std::cos(flatDegrees * 3.14159265358979323846 / 180.0);
   const auto point = [&points](int v) { return &points[3 * static_cast<size_t>(v)]; };
   const auto smallestAngle = [&point](const std::array<int, 3>& t)
-  {
-    double angle[3];
-    CornerAngles(point(t[0]), point(t[1]), point(t[2]), angle);
-    return *std::min_element(angle, angle + 3);
-  };
+  { return SmallestCorner(point(t[0]), point(t[1]), point(t[2])); };
   std::vector<int> valence(pinned.size(), 0);
   std::vector<char> onBorder(pinned.size(), 0);
   int flips = 0;
@@ -328,15 +333,14 @@ int RelaxThinTriangles(
       {
         p[k] = tri[k] == v ? at : point(tri[k]);
       }
-      double before[3], after[3], angle[3];
+      double before[3], after[3];
       UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), before);
       UnitNormal(p[0], p[1], p[2], after);
       if (Dot(before, after) < 0.7)
       {
         return false;
       }
-      CornerAngles(p[0], p[1], p[2], angle);
-      smallest = std::min(smallest, *std::min_element(angle, angle + 3));
+      smallest = std::min(smallest, SmallestCorner(p[0], p[1], p[2]));
     }
     return true;
   };
@@ -427,23 +431,23 @@ int CollapseThinTriangles(
   const size_t vertices = remesh.SiteIds.size();
   std::vector<std::vector<int>> around(vertices); // incident triangles, dead ones included
   std::vector<char> alive(remesh.Triangles.size(), 1), onBorder(vertices, 0);
-  std::unordered_map<std::uint64_t, int> directed;
   for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
   {
-    for (int e = 0; e < 3; ++e)
+    for (int v : remesh.Triangles[t])
     {
-      around[static_cast<size_t>(remesh.Triangles[t][e])].push_back(t);
-      directed[DirectedKey(remesh.Triangles[t][e], remesh.Triangles[t][(e + 1) % 3])] = t;
+      around[static_cast<size_t>(v)].push_back(t);
     }
   }
-  for (const auto& t : remesh.Triangles)
+  // Border vertices: the ends of edges with one triangle.
+  const EdgeTable edges(remesh.Triangles);
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
   {
-    for (int e = 0; e < 3; ++e)
+    if (edges.Edge(e).size() == 1)
     {
-      if (!directed.count(DirectedKey(t[(e + 1) % 3], t[e])))
-      {
-        onBorder[static_cast<size_t>(t[e])] = onBorder[static_cast<size_t>(t[(e + 1) % 3])] = 1;
-      }
+      const EdgeUse& use = *edges.Edge(e).begin();
+      const std::array<int, 3>& t = remesh.Triangles[static_cast<size_t>(use.Triangle)];
+      onBorder[static_cast<size_t>(t[use.Local])] =
+        onBorder[static_cast<size_t>(t[(use.Local + 1) % 3])] = 1;
     }
   }
   const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
@@ -459,11 +463,7 @@ int CollapseThinTriangles(
     return p;
   };
   const auto smallestAngle = [](const std::array<const double*, 3>& p)
-  {
-    double angle[3];
-    CornerAngles(p[0], p[1], p[2], angle);
-    return *std::min_element(angle, angle + 3);
-  };
+  { return SmallestCorner(p[0], p[1], p[2]); };
   const auto longestEdge = [](const std::array<const double*, 3>& p)
   {
     return std::sqrt(
@@ -985,10 +985,8 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     const bool anyThin = std::any_of(remesh.Triangles.begin(), remesh.Triangles.end(),
       [&remesh](const std::array<int, 3>& t)
       {
-        double angle[3];
-        CornerAngles(
-          &remesh.Points[3 * t[0]], &remesh.Points[3 * t[1]], &remesh.Points[3 * t[2]], angle);
-        return *std::min_element(angle, angle + 3) < ThinCorner;
+        return SmallestCorner(&remesh.Points[3 * t[0]], &remesh.Points[3 * t[1]],
+                 &remesh.Points[3 * t[2]]) < ThinCorner;
       });
     if (surface && anyThin)
     {
