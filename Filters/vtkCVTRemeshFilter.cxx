@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -35,10 +36,11 @@ vtkStandardNewMacro(vtkCVTRemeshFilter);
 
 namespace
 {
-/// Rounds of sites added for the remesh's topology, and the Lloyd iterations after each (more
-/// would let the cells wrap round thin parts again).
+/// Rounds of sites added for the remesh's topology, and the Lloyd iterations after each. Few
+/// iterations keep the added sites where they cut thin handles (more let the cells wrap round
+/// them again: turbine); where that fails, more spread crowded added sites (spider's legs).
 constexpr int MaximumTopologyRounds = 8;
-constexpr int TopologyRoundIterations = 3;
+constexpr int TopologyRoundIterations[] = { 3, 10 };
 
 /// How far a remesh's topology is from the input's: 0 when the same.
 int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
@@ -46,6 +48,66 @@ int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
   return std::abs(a.Components - b.Components) + std::abs(a.Genus - b.Genus) +
     std::abs(a.BoundaryLoops - b.BoundaryLoops) +
     std::abs(a.EulerCharacteristic - b.EulerCharacteristic);
+}
+
+/// A remesh and how it came about.
+struct TopologyRefinement
+{
+  cvt::Remesh Remesh;
+  cvt::MeshTopology Topology;
+  int Mismatch = std::numeric_limits<int>::max(); // TopologyMismatch against the input's
+  int AddedSites = 0;
+};
+
+/// The remesh of `sites`, and while its topology is not the input's, that of `sites` with
+/// sites added where the dual asks for them (RestrictedDual::SplitPoints), each round settled
+/// by `settleIterations` Lloyd iterations. Keeps in `best` the first remesh with the input's
+/// topology, else the closest; false (and `error`) when the engine fails.
+bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
+  const cvt::MeshTopology& input, const std::vector<double>& sites, int settleIterations,
+  const std::function<bool()>& aborted, TopologyRefinement& best, std::string& error)
+{
+  cvt::RestrictedProblem problem(engine);
+  cvt::OptimizerResult refined; // the sites of the remesh: the CVT's, then those added
+  refined.Sites = sites;
+  if (!engine.SetSites(sites))
+  {
+    error = engine.GetLastError();
+    return false;
+  }
+  for (int round = 0;; ++round)
+  {
+    cvt::RestrictedDual dual;
+    if (!engine.ComputeDual(dual))
+    {
+      error = "the restricted Delaunay triangulation failed: " + engine.GetLastError();
+      return false;
+    }
+    cvt::Remesh candidate = cvt::BuildRemesh(dual, input.Loops.size(), 8, &mesh);
+    const cvt::MeshTopology topology =
+      cvt::ComputeMeshTopology(static_cast<int>(candidate.SiteIds.size()), candidate.Triangles);
+    const int mismatch = TopologyMismatch(topology, input);
+    if (mismatch < best.Mismatch)
+    {
+      best.Remesh = std::move(candidate);
+      best.Topology = topology;
+      best.Mismatch = mismatch;
+      best.AddedSites = static_cast<int>((refined.Sites.size() - sites.size()) / 3);
+    }
+    if (mismatch == 0 || dual.SplitPoints.empty() || round == MaximumTopologyRounds || aborted())
+    {
+      return true;
+    }
+    cvt::SiteState more{ refined.Sites, {} };
+    more.Sites.insert(more.Sites.end(), dual.SplitPoints.begin(), dual.SplitPoints.end());
+    cvt::OptimizerOptions settle;
+    settle.MaximumNumberOfIterations = settleIterations;
+    if (!cvt::RunLloyd(problem, more, settle, nullptr, refined, error))
+    {
+      error = "the surface CVT failed: " + (error.empty() ? engine.GetLastError() : error);
+      return false;
+    }
+  }
 }
 
 /// The cleaned, triangulated input (coincident points merged, polygons and strips split).
@@ -270,50 +332,26 @@ bool vtkCVTRemeshFilter::Compute(
   // the triangles that would keep what they wrap. There the remesh gets more vertices: sites
   // are added that cut such parts into disks and a few Lloyd iterations settle them, until
   // the restricted cells have the closed-ball property (the restricted Delaunay triangulation
-  // then has the surface's topology) or the rounds run out. The CVT's own sites, the output,
-  // stay as optimised.
+  // then has the surface's topology) or the rounds run out; then once more with longer
+  // settling. The CVT's own sites, the output, stay as optimised.
   // The remesh kept is the first whose topology is the input's, else the closest one.
-  cvt::Remesh remesh;
-  cvt::MeshTopology remeshTopology;
-  int addedSites = 0, remeshMismatch = std::numeric_limits<int>::max();
-  cvt::OptimizerResult refined; // the sites of the remesh: the CVT's, then those added
-  refined.Sites = result.Sites;
-  for (int round = 0;; ++round)
+  TopologyRefinement best;
+  for (int iterations : TopologyRoundIterations)
   {
-    cvt::RestrictedDual dual;
-    if (!engine.ComputeDual(dual))
-    {
-      vtkErrorMacro(
-        "The restricted Delaunay triangulation failed: " << engine.GetLastError() << ".");
-      return false;
-    }
-    cvt::Remesh candidate = cvt::BuildRemesh(dual, inputTopology.Loops.size(), 8, &mesh);
-    const cvt::MeshTopology topology =
-      cvt::ComputeMeshTopology(static_cast<int>(candidate.SiteIds.size()), candidate.Triangles);
-    const int mismatch = TopologyMismatch(topology, inputTopology);
-    if (mismatch < remeshMismatch)
-    {
-      remesh = std::move(candidate);
-      remeshTopology = topology;
-      remeshMismatch = mismatch;
-      addedSites = static_cast<int>((refined.Sites.size() - result.Sites.size()) / 3);
-    }
-    if (mismatch == 0 || dual.SplitPoints.empty() || round == MaximumTopologyRounds ||
-      this->GetAbortExecute())
+    if (best.Mismatch == 0 || this->GetAbortExecute())
     {
       break;
     }
-    cvt::SiteState more{ refined.Sites, {} };
-    more.Sites.insert(more.Sites.end(), dual.SplitPoints.begin(), dual.SplitPoints.end());
-    cvt::OptimizerOptions settle;
-    settle.MaximumNumberOfIterations = TopologyRoundIterations;
-    if (!cvt::RunLloyd(restricted, more, settle, nullptr, refined, error))
+    if (!RefineForTopology(
+          engine, mesh, inputTopology, result.Sites, iterations,
+          [this]() { return this->GetAbortExecute() != 0; }, best, error))
     {
-      vtkErrorMacro(
-        "The surface CVT failed: " << (error.empty() ? engine.GetLastError() : error) << ".");
+      vtkErrorMacro("The remesh failed: " << error << ".");
       return false;
     }
   }
+  const cvt::Remesh& remesh = best.Remesh;
+  const cvt::MeshTopology& remeshTopology = best.Topology;
   FillLabels(labelsOut, triangles, mesh, labels);
   const cvt::CellSums& sums = result.Sums;
   const std::vector<double>& sites = result.Sites;
@@ -329,7 +367,7 @@ bool vtkCVTRemeshFilter::Compute(
       std::to_string(vtkSMPTools::GetEstimatedNumberOfThreads()) + " threads (" +
       vtkSMPTools::GetBackend() + ")");
   AddTopology(fields, "Input", inputTopology);
-  cvtvtk::AddFieldValue(fields, "AddedSites", addedSites);
+  cvtvtk::AddFieldValue(fields, "AddedSites", best.AddedSites);
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -379,7 +417,7 @@ bool vtkCVTRemeshFilter::Compute(
   cvtvtk::AddFieldValue(remeshFields, "SeparatedVertices", remesh.SeparatedVertices);
   AddTopology(remeshFields, "", remeshTopology);
   AddTopology(remeshFields, "Input", inputTopology);
-  if (remeshMismatch != 0)
+  if (best.Mismatch != 0)
   {
     vtkWarningMacro("The remesh's topology differs from the input's ("
       << remeshTopology.Components << " parts, genus " << remeshTopology.Genus << ", "
