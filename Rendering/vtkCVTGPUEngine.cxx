@@ -1,5 +1,6 @@
 #include "vtkCVTGPUEngine.h"
 
+#include "vtkCVTJumpFlooding.h"
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -38,8 +39,30 @@ void vtkCVTGPUEngine::ReleaseGraphicsResources()
 }
 
 //------------------------------------------------------------------------------
+int vtkCVTGPUEngine::GetLastInitialStep() const
+{
+  return this->GetJumpFlooding().GetLastInitialStep();
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTGPUEngine::GetNumberOfSafeguardFallbacks() const
+{
+  return this->GetJumpFlooding().GetNumberOfFallbacks();
+}
+
+//------------------------------------------------------------------------------
+double vtkCVTGPUEngine::GetLastMaximumCellRadius() const
+{
+  return this->GetJumpFlooding().GetLastMaximumRadius();
+}
+
+//------------------------------------------------------------------------------
 void vtkCVTGPUEngine::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Context: " << this->GetContextDescription() << "\n";
+  os << indent << "AdaptiveStep: " << this->AdaptiveStep << "\n";
+  os << indent << "MeasureTimings: " << this->MeasureTimings << "\n";
+  os << indent << "LastInitialStep: " << this->GetLastInitialStep() << "\n";
+  os << indent << "SafeguardFallbacks: " << this->GetNumberOfSafeguardFallbacks() << "\n";
 }

@@ -1,7 +1,8 @@
 /**
  * @class   vtkCVTGPUEngine
  * @brief   What the OpenGL CVT engines share: their context (their own, or a render window's
- *          handed in) and the lifetime of their GL objects.
+ *          handed in), the lifetime of their GL objects, the jump flooding's adaptive step and
+ *          the timings.
  *
  * A subclass frees its GL objects in ReleaseObjects(), which ReleaseGraphicsResources() calls
  * with the context current: on request, when the context changes, and from the subclass's
@@ -16,6 +17,7 @@
 
 #include <string> // for std::string
 
+class vtkCVTJumpFlooding;
 class vtkCVTOpenGLContext;
 class vtkOpenGLRenderWindow;
 class vtkRenderWindow;
@@ -41,6 +43,35 @@ public:
   /** Free every GL object now (also done on destruction). */
   void ReleaseGraphicsResources();
 
+  ///@{
+  /**
+   * Shrink the initial JFA step once sites are spread (Rong 3.1), with the safeguard (see
+   * vtkCVTJumpFlooding). On by default; off runs the full 1+JFA every time.
+   */
+  vtkSetMacro(AdaptiveStep, bool);
+  vtkGetMacro(AdaptiveStep, bool);
+  vtkBooleanMacro(AdaptiveStep, bool);
+  ///@}
+
+  /** Initial JFA step of the last labelling, and how often the safeguard fell back. */
+  int GetLastInitialStep() const;
+  int GetNumberOfSafeguardFallbacks() const;
+  /** Largest distance (pixels) from a site's pixel to a pixel labelled with it, last labelling. */
+  double GetLastMaximumCellRadius() const;
+
+  ///@{
+  /**
+   * Wait for the GPU after each phase so that the phase timings below are true (benchmarks);
+   * off by default, since waiting costs throughput.
+   */
+  vtkSetMacro(MeasureTimings, bool);
+  vtkGetMacro(MeasureTimings, bool);
+  ///@}
+
+  /** Milliseconds of the last labelling (seed + JFA) and reduction (+ readback). */
+  double GetLastLabelMilliseconds() const { return this->LastLabelMilliseconds; }
+  double GetLastReductionMilliseconds() const { return this->LastReductionMilliseconds; }
+
 protected:
   vtkCVTGPUEngine();
   ~vtkCVTGPUEngine() override;
@@ -48,7 +79,14 @@ protected:
   /** Free the subclass's GL objects; `window`'s context is current. */
   virtual void ReleaseObjects(vtkOpenGLRenderWindow* window) = 0;
 
+  /** The subclass's jump flooding pass. */
+  virtual const vtkCVTJumpFlooding& GetJumpFlooding() const = 0;
+
   vtkNew<vtkCVTOpenGLContext> Context;
+  bool AdaptiveStep = true;
+  bool MeasureTimings = false;
+  double LastLabelMilliseconds = 0.0;
+  double LastReductionMilliseconds = 0.0;
 
 private:
   vtkCVTGPUEngine(const vtkCVTGPUEngine&) = delete;

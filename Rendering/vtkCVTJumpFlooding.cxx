@@ -32,6 +32,28 @@ bool vtkCVTJumpFlooding::Allocate(vtkOpenGLRenderWindow* window, int width, int 
       return false;
     }
   }
+  this->FullInitialStep = vtkCVTJumpFlooding::FullStep(width, height);
+  this->NextInitialStep = this->FullInitialStep;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTJumpFlooding::AcceptLabelling(int initialStep, double maximumRadius)
+{
+  // A pixel labelled with a site r pixels away has its true nearest site within r too (in the
+  // plane; on a geometry image as far as its pixels are evenly sized), so every label is right
+  // when r, with a margin for JFA's own misses, is within the 2 * step - 1 pixels that the
+  // passes can carry a site.
+  const int reach = 2 * initialStep - 1;
+  if (initialStep < this->FullInitialStep && 1.5 * maximumRadius > reach)
+  {
+    ++this->Fallbacks;
+    return false;
+  }
+  this->LastInitialStep = initialStep;
+  this->LastMaximumRadius = maximumRadius;
+  // Next time, start from the smallest step whose reach covers twice the largest cell radius.
+  this->NextInitialStep = std::min(this->FullInitialStep, NextPowerOfTwo(maximumRadius + 0.5));
   return true;
 }
 

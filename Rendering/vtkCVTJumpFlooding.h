@@ -2,6 +2,12 @@
 // OpenGL engines. It owns two ping-pong float textures with their framebuffers and the quad
 // program; the distance is a GLSL snippet spliced into vtkCVTJumpFloodFS.glsl (the plane's or
 // the geometry image's), and the engines seed the textures with their own shaders.
+//
+// It also chooses the initial step (Rong 3.1): the full one (half the next power of two of the
+// grid side) until sites are known to be spread, then the smallest power of two that reaches
+// twice the largest cell radius seen (in pixels), with a safeguard: a labelling whose largest
+// cell radius, with a margin for JFA's own misses, is beyond what its step can reach is redone
+// with the full step.
 #ifndef vtkCVTJumpFlooding_h
 #define vtkCVTJumpFlooding_h
 
@@ -24,8 +30,28 @@ public:
   ~vtkCVTJumpFlooding();
 
   /// Two width x height RGBA float textures, each with a framebuffer and a depth buffer (the
-  /// seeding keeps the lowest site id per pixel by depth test); storage follows sizes.
+  /// seeding keeps the lowest site id per pixel by depth test); storage follows sizes. A new
+  /// grid starts from the full step.
   bool Allocate(vtkOpenGLRenderWindow* window, int width, int height);
+
+  ///@{
+  /// The initial step: with `adaptive`, the one the last accepted labelling asks for.
+  int GetInitialStep(bool adaptive) const
+  {
+    return adaptive ? this->NextInitialStep : this->FullInitialStep;
+  }
+  int GetFullStep() const { return this->FullInitialStep; }
+  /// A new site set: nothing is known about its spacing. (The same number of sites moved by an
+  /// optimiser's step keeps the adaptive step; the safeguard catches large moves.)
+  void ForgetSpacing() { this->NextInitialStep = this->FullInitialStep; }
+  /// Whether a labelling from `initialStep` whose farthest pixel lies `maximumRadius` pixels
+  /// from its site can be trusted; if so the next step follows that radius, else the caller
+  /// labels again with the full step (counted in GetNumberOfFallbacks).
+  bool AcceptLabelling(int initialStep, double maximumRadius);
+  int GetLastInitialStep() const { return this->LastInitialStep; }
+  double GetLastMaximumRadius() const { return this->LastMaximumRadius; }
+  int GetNumberOfFallbacks() const { return this->Fallbacks; }
+  ///@}
 
   vtkTextureObject* GetTexture(int i) { return this->Textures[i]; }
   vtkOpenGLFramebufferObject* GetFramebuffer(int i) { return this->Framebuffers[i]; }
@@ -49,6 +75,11 @@ public:
 
 private:
   const char* Distance;
+  int FullInitialStep = 1;
+  int NextInitialStep = 1;
+  int LastInitialStep = 0;
+  double LastMaximumRadius = 0.0;
+  int Fallbacks = 0;
   vtkNew<vtkTextureObject> Textures[2];
   vtkNew<vtkOpenGLFramebufferObject> Framebuffers[2];
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;

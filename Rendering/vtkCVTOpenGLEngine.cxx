@@ -3,6 +3,7 @@
 #include "vtkCVTJumpFlooding.h"
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
+#include "vtkCVTSlotReduction.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -51,11 +52,11 @@ struct vtkCVTOpenGLEngine::Internals
   vtkNew<vtkTextureObject> Sites[2];                  // Lloyd ping-pong
   vtkNew<vtkTextureObject> Candidates;            // split pixels: candidate sites and collectors
   vtkNew<vtkTextureObject> Pieces[MaxCandidates]; // split pixels: each candidate's piece
-  vtkNew<vtkTextureObject> Sums;
-  vtkNew<vtkTextureObject> Radius;
+  // Per slot: the cell sums, and the largest distance of a pixel from its site (pixels).
+  vtkCVTSlotReduction Reduction{ { { 4, vtkCVTSlotReduction::Blend::Sum },
+    { 1, vtkCVTSlotReduction::Blend::Maximum } } };
   vtkNew<vtkOpenGLFramebufferObject> SplitFramebuffer;
   vtkNew<vtkOpenGLFramebufferObject> SitesFramebuffer[2];
-  vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray; // attribute-less point draws
   std::unique_ptr<vtkOpenGLQuadHelper> SplitQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CollectQuad;
@@ -73,9 +74,7 @@ struct vtkCVTOpenGLEngine::Internals
       piece->ReleaseGraphicsResources(window);
     }
     this->SplitFramebuffer->ReleaseGraphicsResources(window);
-    this->Sums->ReleaseGraphicsResources(window);
-    this->Radius->ReleaseGraphicsResources(window);
-    this->SumsFramebuffer->ReleaseGraphicsResources(window);
+    this->Reduction.Release(window);
     for (int i = 0; i < 2; ++i)
     {
       this->Sites[i]->ReleaseGraphicsResources(window);
@@ -111,6 +110,12 @@ vtkCVTOpenGLEngine::~vtkCVTOpenGLEngine()
 void vtkCVTOpenGLEngine::ReleaseObjects(vtkOpenGLRenderWindow* window)
 {
   this->Internal->Release(window);
+}
+
+//------------------------------------------------------------------------------
+const vtkCVTJumpFlooding& vtkCVTOpenGLEngine::GetJumpFlooding() const
+{
+  return this->Internal->Flooding;
 }
 
 //------------------------------------------------------------------------------
@@ -159,8 +164,6 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   this->Metric[0] = static_cast<float>(grid.Spacing[0]);
   this->Metric[1] = static_cast<float>(grid.Spacing[1]);
   this->NumberOfSites = 0;
-  this->FullStep = vtkCVTJumpFlooding::FullStep(grid.Width, grid.Height);
-  this->NextStep = this->FullStep;
   bool ok = AllocateFloatTexture(in.Density, window, grid.Width, grid.Height, 1, density.data());
   ok = ok && in.Flooding.Allocate(window, grid.Width, grid.Height);
   ok = ok && AllocateFloatTexture(in.Candidates, window, grid.Width, grid.Height, 4);
@@ -203,14 +206,12 @@ bool vtkCVTOpenGLEngine::SetSites(const std::vector<double>& sites)
   {
     return this->Fail("there are no sites");
   }
-  const int maximumSize = this->Context->GetMaximumTextureSize();
-  int slotWidth = std::min(maximumSize, static_cast<int>(std::ceil(std::sqrt(double(n)))));
-  int slotHeight = (n + slotWidth - 1) / slotWidth;
-  if (slotHeight > maximumSize)
+  int slotSize[2];
+  if (!LayoutSlots(n, this->Context->GetMaximumTextureSize(), slotSize))
   {
     return this->Fail("too many sites for this GPU's textures");
   }
-
+  const int slotWidth = slotSize[0], slotHeight = slotSize[1];
   std::vector<float> texels(static_cast<size_t>(slotWidth) * slotHeight * 4, 0.0f);
   for (int i = 0; i < n; ++i)
   {
@@ -225,16 +226,13 @@ bool vtkCVTOpenGLEngine::SetSites(const std::vector<double>& sites)
   Internals& in = *this->Internal;
   // The slot textures follow the site count; an optimiser's step only uploads the sites.
   bool ok = AllocateFloatTexture(in.Sites[0], window, slotWidth, slotHeight, 4, texels.data());
-  if (ok &&
-    (slotWidth != this->SlotSize[0] || slotHeight != this->SlotSize[1] || !in.Sums->GetHandle()))
+  if (ok && (slotWidth != this->SlotSize[0] || slotHeight != this->SlotSize[1]))
   {
     ok = AllocateFloatTexture(in.Sites[1], window, slotWidth, slotHeight, 4) &&
       AttachTargets(in.SitesFramebuffer[0], window, in.Sites[0]) &&
-      AttachTargets(in.SitesFramebuffer[1], window, in.Sites[1]) &&
-      AllocateFloatTexture(in.Sums, window, slotWidth, slotHeight, 4) &&
-      AllocateFloatTexture(in.Radius, window, slotWidth, slotHeight, 1) &&
-      AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Radius);
+      AttachTargets(in.SitesFramebuffer[1], window, in.Sites[1]);
   }
+  ok = ok && in.Reduction.Allocate(window, slotSize);
   if (!ok)
   {
     return this->Fail("the GPU could not allocate the site textures");
@@ -243,9 +241,7 @@ bool vtkCVTOpenGLEngine::SetSites(const std::vector<double>& sites)
   in.HaveSums = false;
   if (n != this->NumberOfSites)
   {
-    // A new site set: nothing is known about its spacing. The same number of sites moved
-    // (an optimiser's step) keeps the adaptive step; the safeguard catches large moves.
-    this->NextStep = this->FullStep;
+    in.Flooding.ForgetSpacing();
   }
   this->NumberOfSites = n;
   this->SlotSize[0] = slotWidth;
@@ -329,7 +325,6 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   }
   in.CurrentSeeds = labelled;
   state->PopFramebufferBindings();
-  this->LastInitialStep = initialStep;
   return this->CheckGLError("jump flooding");
 }
 
@@ -347,7 +342,6 @@ bool vtkCVTOpenGLEngine::Reduce()
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunction(state);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
@@ -399,9 +393,7 @@ bool vtkCVTOpenGLEngine::Reduce()
   }
   in.Candidates->Deactivate();
 
-  // Step 3: one point per pixel, scattered to its site's slot; target 0 sums, target 1 keeps
-  // the maximum. vtkOpenGLState caches one blend equation for all targets, so the per-target
-  // one is set directly and put back to FUNC_ADD afterwards.
+  // Step 3: one point per pixel, scattered to its site's slot: the sums, and the radius.
   vtkShaderProgram* reduce = ReadyProgram(window, vtkCVTReduceVS, vtkCVTReduceFS);
   if (!reduce)
   {
@@ -409,11 +401,6 @@ bool vtkCVTOpenGLEngine::Reduce()
     state->PopFramebufferBindings();
     return this->Fail("the reduction shader did not compile");
   }
-  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
-  in.SumsFramebuffer->Bind();
-  in.SumsFramebuffer->ActivateDrawBuffers(2);
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
   collected->Activate();
   reduce->SetUniformi("seeds", seeds->GetTextureUnit());
   reduce->SetUniformi("collected", collected->GetTextureUnit());
@@ -422,14 +409,7 @@ bool vtkCVTOpenGLEngine::Reduce()
   reduce->SetUniform2f("metric", this->Metric);
   reduce->SetUniformf("radiusScale",
     static_cast<float>(1.0 / std::min(this->Grid.Spacing[0], this->Grid.Spacing[1])));
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-  state->vtkglBlendEquation(GL_FUNC_ADD);
-  glBlendEquationi(1, GL_MAX);
-  in.EmptyVertexArray->Bind();
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(this->Grid.NumberOfPixels()));
-  in.EmptyVertexArray->Release();
-  glBlendEquationi(1, GL_FUNC_ADD);
+  in.Reduction.Scatter(window, this->Grid.NumberOfPixels());
   collected->Deactivate();
   seeds->Deactivate();
   state->PopFramebufferBindings();
@@ -441,12 +421,9 @@ bool vtkCVTOpenGLEngine::Reduce()
 bool vtkCVTOpenGLEngine::ReadSums(cvt::CellSums& sums, double& maximumRadius)
 {
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
-  const size_t slots = static_cast<size_t>(this->SlotSize[0]) * this->SlotSize[1];
-  std::vector<float> texels(4 * slots), radius(slots);
-  ReadTarget(this->Internal->SumsFramebuffer, window, 0, this->SlotSize[0], this->SlotSize[1],
-    GL_RGBA, texels.data());
-  ReadTarget(this->Internal->SumsFramebuffer, window, 1, this->SlotSize[0], this->SlotSize[1],
-    GL_RED, radius.data());
+  std::vector<float> texels, radius;
+  this->Internal->Reduction.Read(window, 0, texels);
+  this->Internal->Reduction.Read(window, 1, radius);
   sums.Resize(this->NumberOfSites);
   maximumRadius = 0.0;
   for (int i = 0; i < this->NumberOfSites; ++i)
@@ -468,9 +445,9 @@ bool vtkCVTOpenGLEngine::ComputeCellSums(cvt::CellSums& sums)
     return this->Fail("SetSites must succeed before ComputeCellSums");
   }
   ScopedContext current(this->Context);
-  const int step = this->AdaptiveStep ? this->NextStep : this->FullStep;
-  double maximumRadius = 0.0;
-  for (int initialStep = step;; initialStep = this->FullStep)
+  vtkCVTJumpFlooding& flooding = this->Internal->Flooding;
+  for (int initialStep = flooding.GetInitialStep(this->AdaptiveStep);;
+       initialStep = flooding.GetFullStep())
   {
     auto start = Clock::now();
     if (!this->Label(initialStep))
@@ -483,27 +460,17 @@ bool vtkCVTOpenGLEngine::ComputeCellSums(cvt::CellSums& sums)
     }
     this->LastLabelMilliseconds = MillisecondsSince(start);
     start = Clock::now();
+    double maximumRadius = 0.0;
     if (!this->Reduce() || !this->ReadSums(sums, maximumRadius))
     {
       return false;
     }
     this->LastReductionMilliseconds = MillisecondsSince(start);
-    // Safeguard: a pixel labelled with a site r pixels away has its true nearest site within
-    // r too, so every label is right when r (with a margin for JFA's own misses) is within
-    // the 2 * step - 1 pixels that the passes can carry a site.
-    const int reach = 2 * initialStep - 1;
-    if (initialStep >= this->FullStep || 1.5 * maximumRadius <= reach)
+    if (flooding.AcceptLabelling(initialStep, maximumRadius))
     {
-      break;
+      return true;
     }
-    ++this->SafeguardFallbacks;
   }
-  this->LastMaximumRadius = maximumRadius;
-  // Next time, start from the smallest step whose reach (2 * step - 1) covers twice the
-  // largest cell radius.
-  this->NextStep =
-    std::min(this->FullStep, vtkCVTJumpFlooding::NextPowerOfTwo(maximumRadius + 0.5));
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -532,15 +499,16 @@ bool vtkCVTOpenGLEngine::MoveSitesToCentroids()
     return this->Fail("the Lloyd update shader did not compile");
   }
   in.Sites[in.CurrentSites]->Activate();
-  in.Sums->Activate();
+  vtkTextureObject* cellSums = in.Reduction.GetTexture(0);
+  cellSums->Activate();
   lloyd->SetUniformi("sites", in.Sites[in.CurrentSites]->GetTextureUnit());
-  lloyd->SetUniformi("sums", in.Sums->GetTextureUnit());
+  lloyd->SetUniformi("sums", cellSums->GetTextureUnit());
   lloyd->SetUniform2i("slotSize", this->SlotSize);
   lloyd->SetUniformi("numberOfSites", this->NumberOfSites);
   lloyd->SetUniform2f("metric", this->Metric);
   lloyd->SetUniform2i("gridSize", this->GridSize);
   in.LloydQuad->Render();
-  in.Sums->Deactivate();
+  cellSums->Deactivate();
   in.Sites[in.CurrentSites]->Deactivate();
   state->PopFramebufferBindings();
   if (this->MeasureTimings)
@@ -600,9 +568,5 @@ void vtkCVTOpenGLEngine::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Grid: " << this->Grid.Width << " x " << this->Grid.Height << "\n";
   os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
-  os << indent << "AdaptiveStep: " << this->AdaptiveStep << "\n";
   os << indent << "SplitBoundaryPixels: " << this->SplitBoundaryPixels << "\n";
-  os << indent << "MeasureTimings: " << this->MeasureTimings << "\n";
-  os << indent << "LastInitialStep: " << this->LastInitialStep << "\n";
-  os << indent << "SafeguardFallbacks: " << this->SafeguardFallbacks << "\n";
 }

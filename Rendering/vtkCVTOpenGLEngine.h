@@ -13,10 +13,7 @@
  * - the Lloyd update runs in a fragment pass over the site texture; sites are read back only
  *   when asked for.
  *
- * The initial JFA step is the full one (half the next power of two of the grid side) until
- * sites are known to be spread; then it is the smallest power of two that reaches twice the
- * largest cell radius seen, and a safeguard re-runs the labelling with the full step when a
- * cell turns out larger than the reduced step can reach.
+ * The initial JFA step adapts to the sites' spacing (AdaptiveStep, see vtkCVTGPUEngine).
  *
  * All work happens on the context of a vtkCVTOpenGLContext; the thread's previous context is
  * restored after every call.
@@ -52,16 +49,6 @@ public:
 
   ///@{
   /**
-   * Shrink the initial JFA step once sites are spread (Rong 3.1), with the safeguard.
-   * On by default; off runs the full 1+JFA every time.
-   */
-  vtkSetMacro(AdaptiveStep, bool);
-  vtkGetMacro(AdaptiveStep, bool);
-  vtkBooleanMacro(AdaptiveStep, bool);
-  ///@}
-
-  ///@{
-  /**
    * Split boundary pixels between sites by their bisectors (default on). Off gives each pixel
    * wholly to the site nearest its centre, as the paper does.
    */
@@ -70,28 +57,11 @@ public:
   vtkBooleanMacro(SplitBoundaryPixels, bool);
   ///@}
 
-  ///@{
-  /**
-   * Wait for the GPU after each phase so that the phase timings below are true (benchmarks);
-   * off by default, since waiting costs throughput.
-   */
-  vtkSetMacro(MeasureTimings, bool);
-  vtkGetMacro(MeasureTimings, bool);
-  ///@}
-
-  /** Milliseconds of the last labelling (seed + JFA) and reduction (+ readback). */
-  double GetLastLabelMilliseconds() const { return this->LastLabelMilliseconds; }
-  double GetLastReductionMilliseconds() const { return this->LastReductionMilliseconds; }
-  /** Initial JFA step of the last labelling, and how often the safeguard fell back. */
-  int GetLastInitialStep() const { return this->LastInitialStep; }
-  int GetNumberOfSafeguardFallbacks() const { return this->SafeguardFallbacks; }
-  /** Largest distance (pixels) from a site to a pixel labelled with it, last labelling. */
-  double GetLastMaximumCellRadius() const { return this->LastMaximumRadius; }
-
 protected:
   vtkCVTOpenGLEngine();
   ~vtkCVTOpenGLEngine() override;
   void ReleaseObjects(vtkOpenGLRenderWindow* window) override;
+  const vtkCVTJumpFlooding& GetJumpFlooding() const override;
 
 private:
   vtkCVTOpenGLEngine(const vtkCVTOpenGLEngine&) = delete;
@@ -110,16 +80,7 @@ private:
   float Metric[2] = { 1.0f, 1.0f }; // Grid.Spacing in float
   int NumberOfSites = 0;
   int SlotSize[2] = { 0, 0 };
-  int FullStep = 1;
-  int NextStep = 1;
-  bool AdaptiveStep = true;
   bool SplitBoundaryPixels = true;
-  bool MeasureTimings = false;
-  double LastLabelMilliseconds = 0.0;
-  double LastReductionMilliseconds = 0.0;
-  int LastInitialStep = 0;
-  int SafeguardFallbacks = 0;
-  double LastMaximumRadius = 0.0;
 };
 
 #endif

@@ -11,6 +11,8 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace cvtgl
@@ -56,6 +58,14 @@ bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* wind
     return texture->Create2DFromRaw(width, height, components, VTK_FLOAT, const_cast<float*>(data));
   }
   return texture->Allocate2D(width, height, components, VTK_FLOAT);
+}
+
+bool LayoutSlots(int sites, int maximumSize, int slotSize[2])
+{
+  slotSize[0] =
+    std::max(1, std::min(maximumSize, static_cast<int>(std::ceil(std::sqrt(double(sites))))));
+  slotSize[1] = (sites + slotSize[0] - 1) / slotSize[0];
+  return sites > 0 && slotSize[1] <= maximumSize;
 }
 
 bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,

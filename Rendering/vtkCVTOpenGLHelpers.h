@@ -36,6 +36,10 @@ private:
 bool AllocateFloatTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
   int height, int components, const float* data = nullptr);
 
+/// Lays `sites` slots out in a near-square block (site i at texel (i % width, i / width), as
+/// vtkCVTSlots.glsl addresses them); false when they do not fit in maximumSize^2 texels.
+bool LayoutSlots(int sites, int maximumSize, int slotSize[2]);
+
 /// Attaches the targets (and a depth buffer when asked) to the framebuffer; false if incomplete.
 bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window,
   vtkTextureObject* target0, vtkTextureObject* target1 = nullptr, bool depth = false);

@@ -3,6 +3,7 @@
 #include "vtkCVTJumpFlooding.h"
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
+#include "vtkCVTSlotReduction.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -46,14 +47,14 @@ struct vtkCVTSurfaceEngine::Internals
   vtkNew<vtkTextureObject> Weights;
   vtkCVTJumpFlooding Flooding{ vtkCVTSurfaceDistance }; // jump flooding ping-pong
   vtkNew<vtkTextureObject> Sites;
-  vtkNew<vtkTextureObject> Sums;
-  vtkNew<vtkTextureObject> Energy;
+  // Per slot: the cell sums, the energy, and the largest pixel distance from the site's pixel.
+  vtkCVTSlotReduction Reduction{ { { 4, vtkCVTSlotReduction::Blend::Sum },
+    { 1, vtkCVTSlotReduction::Blend::Sum }, { 1, vtkCVTSlotReduction::Blend::Maximum } } };
   vtkNew<vtkTextureObject> Targets;        // constrained centroids: slot per site
   vtkNew<vtkTextureObject> NearestPoints;  // per pixel: (point, distance)
   vtkNew<vtkTextureObject> NearestCorners; // per pixel: pixel index of that point
   vtkNew<vtkTextureObject> Nearest;        // slot per site: (point, pixel index)
   vtkNew<vtkTextureObject> NearestDepth;   // its depth buffer (distance)
-  vtkNew<vtkOpenGLFramebufferObject> SumsFramebuffer;
   vtkNew<vtkOpenGLFramebufferObject> NearestPixelsFramebuffer;
   vtkNew<vtkOpenGLFramebufferObject> NearestFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> NearestQuad;
@@ -63,16 +64,17 @@ struct vtkCVTSurfaceEngine::Internals
   void Release(vtkOpenGLRenderWindow* window)
   {
     for (vtkTextureObject* t : { this->Positions.Get(), this->Weights.Get(), this->Sites.Get(),
-           this->Sums.Get(), this->Energy.Get(), this->Targets.Get(), this->NearestPoints.Get(),
-           this->NearestCorners.Get(), this->Nearest.Get(), this->NearestDepth.Get() })
+           this->Targets.Get(), this->NearestPoints.Get(), this->NearestCorners.Get(),
+           this->Nearest.Get(), this->NearestDepth.Get() })
     {
       t->ReleaseGraphicsResources(window);
     }
-    for (vtkOpenGLFramebufferObject* f : { this->SumsFramebuffer.Get(),
-           this->NearestPixelsFramebuffer.Get(), this->NearestFramebuffer.Get() })
+    for (vtkOpenGLFramebufferObject* f :
+      { this->NearestPixelsFramebuffer.Get(), this->NearestFramebuffer.Get() })
     {
       f->ReleaseGraphicsResources(window);
     }
+    this->Reduction.Release(window);
     this->EmptyVertexArray->ReleaseGraphicsResources();
     this->Flooding.Release(window);
     if (this->NearestQuad)
@@ -99,6 +101,12 @@ vtkCVTSurfaceEngine::~vtkCVTSurfaceEngine()
 void vtkCVTSurfaceEngine::ReleaseObjects(vtkOpenGLRenderWindow* window)
 {
   this->Internal->Release(window);
+}
+
+//------------------------------------------------------------------------------
+const vtkCVTJumpFlooding& vtkCVTSurfaceEngine::GetJumpFlooding() const
+{
+  return this->Internal->Flooding;
 }
 
 //------------------------------------------------------------------------------
@@ -195,8 +203,12 @@ bool vtkCVTSurfaceEngine::SetSites(
     return this->Fail("the sites need three coordinates and one pixel each");
   }
   const long long total = static_cast<long long>(this->GridSize[0]) * this->GridSize[1];
-  const int slotWidth = static_cast<int>(std::ceil(std::sqrt(double(n))));
-  const int slotHeight = (n + slotWidth - 1) / slotWidth;
+  int slotSize[2];
+  if (!LayoutSlots(n, this->Context->GetMaximumTextureSize(), slotSize))
+  {
+    return this->Fail("too many sites for this GPU's textures");
+  }
+  const int slotWidth = slotSize[0], slotHeight = slotSize[1];
   std::vector<float> texels(static_cast<size_t>(slotWidth) * slotHeight * 4, 0.0f);
   for (int i = 0; i < n; ++i)
   {
@@ -217,16 +229,17 @@ bool vtkCVTSurfaceEngine::SetSites(
   {
     return this->Fail("the GPU could not allocate the site texture");
   }
-  if (n != this->NumberOfSites || slotWidth != this->SlotSize[0] || !in.Sums->GetHandle())
+  if (!in.Reduction.Allocate(window, slotSize) ||
+    ((slotWidth != this->SlotSize[0] || slotHeight != this->SlotSize[1] ||
+       !in.Nearest->GetHandle()) &&
+      (!AllocateFloatTexture(in.Nearest, window, slotWidth, slotHeight, 4) ||
+        !this->AttachNearestTargets(slotWidth, slotHeight))))
   {
-    if (!AllocateFloatTexture(in.Sums, window, slotWidth, slotHeight, 4) ||
-      !AllocateFloatTexture(in.Energy, window, slotWidth, slotHeight, 1) ||
-      !AttachTargets(in.SumsFramebuffer, window, in.Sums, in.Energy) ||
-      !AllocateFloatTexture(in.Nearest, window, slotWidth, slotHeight, 4) ||
-      !this->AttachNearestTargets(slotWidth, slotHeight))
-    {
-      return this->Fail("the GPU could not allocate the reduction targets");
-    }
+    return this->Fail("the GPU could not allocate the reduction targets");
+  }
+  if (n != this->NumberOfSites)
+  {
+    in.Flooding.ForgetSpacing();
   }
   this->NumberOfSites = n;
   this->SlotSize[0] = slotWidth;
@@ -242,16 +255,44 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
     return this->Fail("SetSites must succeed before ComputeCellSums");
   }
   ScopedContext current(this->Context);
+  vtkCVTJumpFlooding& flooding = this->Internal->Flooding;
+  for (int initialStep = flooding.GetInitialStep(this->AdaptiveStep);;
+       initialStep = flooding.GetFullStep())
+  {
+    auto start = Clock::now();
+    if (!this->Label(initialStep))
+    {
+      return false;
+    }
+    if (this->MeasureTimings)
+    {
+      glFinish();
+    }
+    this->LastLabelMilliseconds = MillisecondsSince(start);
+    start = Clock::now();
+    double maximumRadius = 0.0;
+    if (!this->Reduce(sums, maximumRadius))
+    {
+      return false;
+    }
+    this->LastReductionMilliseconds = MillisecondsSince(start);
+    if (flooding.AcceptLabelling(initialStep, maximumRadius))
+    {
+      return true;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::Label(int initialStep)
+{
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
-  auto start = Clock::now();
-
   vtkOpenGLState::ScopedglViewport viewport(state);
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunction(state);
   vtkOpenGLState::ScopedglDepthFunc depthFunction(state);
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
   state->vtkglDisable(GL_BLEND);
@@ -278,67 +319,59 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
   in.Sites->Deactivate();
   state->vtkglDisable(GL_DEPTH_TEST);
 
-  // 1+JFA with the full initial step.
+  // 1+JFA from the seeds in texture 0.
   in.Positions->Activate();
-  const int labelled = in.Flooding.Flood(window, 0,
-    vtkCVTJumpFlooding::FullStep(this->GridSize[0], this->GridSize[1]), this->GridSize,
+  const int labelled = in.Flooding.Flood(window, 0, initialStep, this->GridSize,
     [this](vtkShaderProgram* jump)
     {
       jump->SetUniformi("positions", this->Internal->Positions->GetTextureUnit());
       jump->SetUniform2i("wrap", this->Wrap);
     });
+  in.Positions->Deactivate();
+  state->PopFramebufferBindings();
   if (labelled < 0)
   {
-    in.Positions->Deactivate();
-    state->PopFramebufferBindings();
     return this->Fail("the surface jump flooding shader did not compile");
   }
   in.CurrentSeeds = labelled;
-  if (this->MeasureTimings)
-  {
-    glFinish();
-  }
-  this->LastLabelMilliseconds = MillisecondsSince(start);
-  start = Clock::now();
+  return this->CheckGLError("surface jump flooding");
+}
 
-  // Reduction: one point per pixel into its site's slot, both targets summed.
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
+{
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  Internals& in = *this->Internal;
+  // One point per pixel into its site's slot: sums and energy added, the radius the largest.
   vtkShaderProgram* reduce = ReadyProgram(window, vtkCVTSurfaceReduceVS, vtkCVTSurfaceReduceFS);
   if (!reduce)
   {
-    in.Positions->Deactivate();
-    state->PopFramebufferBindings();
     return this->Fail("the surface reduction shader did not compile");
   }
-  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
-  in.SumsFramebuffer->Bind();
-  in.SumsFramebuffer->ActivateDrawBuffers(2);
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
-  in.Flooding.GetTexture(in.CurrentSeeds)->Activate();
+  vtkTextureObject* seeds = in.Flooding.GetTexture(in.CurrentSeeds);
+  seeds->Activate();
+  in.Positions->Activate();
   in.Weights->Activate();
-  reduce->SetUniformi("seeds", in.Flooding.GetTexture(in.CurrentSeeds)->GetTextureUnit());
+  in.Sites->Activate();
+  reduce->SetUniformi("seeds", seeds->GetTextureUnit());
   reduce->SetUniformi("positions", in.Positions->GetTextureUnit());
   reduce->SetUniformi("weights", in.Weights->GetTextureUnit());
+  reduce->SetUniformi("sites", in.Sites->GetTextureUnit());
   reduce->SetUniform2i("gridSize", this->GridSize);
   reduce->SetUniform2i("slotSize", this->SlotSize);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-  state->vtkglBlendEquation(GL_FUNC_ADD);
-  in.EmptyVertexArray->Bind();
-  glDrawArrays(GL_POINTS, 0, this->GridSize[0] * this->GridSize[1]);
-  in.EmptyVertexArray->Release();
+  reduce->SetUniform2i("wrap", this->Wrap);
+  in.Reduction.Scatter(window, static_cast<vtkIdType>(this->GridSize[0]) * this->GridSize[1]);
+  in.Sites->Deactivate();
   in.Weights->Deactivate();
-  in.Flooding.GetTexture(in.CurrentSeeds)->Deactivate();
   in.Positions->Deactivate();
-  state->PopFramebufferBindings();
+  seeds->Deactivate();
 
-  const size_t slots = static_cast<size_t>(this->SlotSize[0]) * this->SlotSize[1];
-  std::vector<float> texels(4 * slots), energy(slots);
-  ReadTarget(
-    in.SumsFramebuffer, window, 0, this->SlotSize[0], this->SlotSize[1], GL_RGBA, texels.data());
-  ReadTarget(
-    in.SumsFramebuffer, window, 1, this->SlotSize[0], this->SlotSize[1], GL_RED, energy.data());
+  std::vector<float> texels, energy, radius;
+  in.Reduction.Read(window, 0, texels);
+  in.Reduction.Read(window, 1, energy);
+  in.Reduction.Read(window, 2, radius);
   sums.Resize(this->NumberOfSites, true);
+  maximumRadius = 0.0;
   for (int i = 0; i < this->NumberOfSites; ++i)
   {
     sums.Mass[i] = texels[4 * i];
@@ -346,9 +379,9 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
     sums.MomentY[i] = texels[4 * i + 2];
     sums.MomentZ[i] = texels[4 * i + 3];
     sums.Energy[i] = energy[i];
+    maximumRadius = std::max(maximumRadius, static_cast<double>(radius[i]));
   }
-  this->LastReductionMilliseconds = MillisecondsSince(start);
-  return this->CheckGLError("surface labelling and reduction");
+  return this->CheckGLError("surface reduction");
 }
 
 //------------------------------------------------------------------------------
@@ -513,5 +546,4 @@ void vtkCVTSurfaceEngine::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GeometryImage: " << this->GridSize[0] << " x " << this->GridSize[1] << " (wrap "
      << this->Wrap[0] << ", " << this->Wrap[1] << ")\n";
   os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
-  os << indent << "MeasureTimings: " << this->MeasureTimings << "\n";
 }

@@ -8,7 +8,8 @@
  * flags) and the mask; a regional reduction by additive float blending gives each cell's mass,
  * moments and energy, weighted by the pixels' area weights. A cell split by the cut into
  * several parts of the image is summed as one. The optimisers (constrained centroids,
- * tangential gradients, projection) run on the CPU side of the seam.
+ * tangential gradients, projection) run on the CPU side of the seam. The initial JFA step
+ * adapts to the sites' spacing in pixels (AdaptiveStep, see vtkCVTGPUEngine).
  */
 #ifndef vtkCVTSurfaceEngine_h
 #define vtkCVTSurfaceEngine_h
@@ -39,18 +40,11 @@ public:
     std::vector<long long>& pixels) override;
   ///@}
 
-  ///@{
-  /** Wait for the GPU after each phase so that the timings are true (benchmarks). */
-  vtkSetMacro(MeasureTimings, bool);
-  vtkGetMacro(MeasureTimings, bool);
-  ///@}
-  double GetLastLabelMilliseconds() const { return this->LastLabelMilliseconds; }
-  double GetLastReductionMilliseconds() const { return this->LastReductionMilliseconds; }
-
 protected:
   vtkCVTSurfaceEngine();
   ~vtkCVTSurfaceEngine() override;
   void ReleaseObjects(vtkOpenGLRenderWindow* window) override;
+  const vtkCVTJumpFlooding& GetJumpFlooding() const override;
 
 private:
   vtkCVTSurfaceEngine(const vtkCVTSurfaceEngine&) = delete;
@@ -60,6 +54,8 @@ private:
   std::unique_ptr<Internals> Internal;
 
   bool CheckGLError(const char* where);
+  bool Label(int initialStep);
+  bool Reduce(cvt::CellSums& sums, double& maximumRadius);
   bool AttachNearestTargets(int width, int height);
 
   cvt::GeometryImage Image; // for the CPU fallback of NearestPointsInCells
@@ -68,9 +64,6 @@ private:
   int Wrap[2] = { 0, 0 };
   int SlotSize[2] = { 0, 0 };
   int NumberOfSites = 0;
-  bool MeasureTimings = false;
-  double LastLabelMilliseconds = 0.0;
-  double LastReductionMilliseconds = 0.0;
 };
 
 #endif

@@ -9,7 +9,8 @@
 //            the density exp(-20x^2-20y^2) + 0.05 sin^2(pi x) sin^2(pi y) with L-BFGS
 //            against the paper's CPU energy 6.116e-5.
 //   surface: the torus (R = 1, r = 0.4, 1000 sites): milliseconds per Lloyd iteration and per
-//            L-BFGS evaluation at 512x256 and 1024x512, and the L-BFGS target run: energy of
+//            L-BFGS evaluation at 512x256 and 1024x512 (adaptive JFA step, then the full
+//            step as the baseline), and the L-BFGS target run: energy of
 //            the final sites evaluated on a dense 2048x1024 geometry image, remesh valence and
 //            angles.
 //   cpu:     the exact CPU engine (multi-threaded) on the Table 1 job (Lloyd, 216 iterations,
@@ -387,13 +388,14 @@ cvt::GeometryImage TorusImage(int width, int height)
   return image;
 }
 
-bool SurfaceTiming(int width, int height)
+bool SurfaceTiming(int width, int height, bool adaptive)
 {
   const cvt::GeometryImage image = TorusImage(width, height);
   std::vector<long long> pixels;
   const std::vector<double> sites = cvt::SampleSurfaceSites(image, 1000, 1, pixels);
   vtkNew<vtkCVTSurfaceEngine> engine;
   engine->SetMeasureTimings(true);
+  engine->SetAdaptiveStep(adaptive);
   if (!engine->SetGeometryImage(image))
   {
     std::fprintf(stderr, "engine failed: %s\n", engine->GetLastError().c_str());
@@ -421,10 +423,11 @@ bool SurfaceTiming(int width, int height)
     perEvaluation.push_back(
       1e3 * (lbfgs.History[k].Seconds - lbfgs.History[k - 1].Seconds) / std::max(1, evaluations));
   }
-  std::printf("torus 1000 sites %4dx%-4d label %7.1f  reduce %6.1f  Lloyd iteration %7.1f  "
-              "L-BFGS evaluation %7.1f ms (medians)\n",
-    width, height, engine->GetLastLabelMilliseconds(), engine->GetLastReductionMilliseconds(),
-    Median(perIteration), Median(perEvaluation));
+  std::printf("torus 1000 sites %4dx%-4d %s step %4d  label %7.1f  reduce %6.1f  Lloyd "
+              "iteration %7.1f  L-BFGS evaluation %7.1f ms (medians; %d fallbacks)\n",
+    width, height, adaptive ? "adaptive" : "full    ", engine->GetLastInitialStep(),
+    engine->GetLastLabelMilliseconds(), engine->GetLastReductionMilliseconds(),
+    Median(perIteration), Median(perEvaluation), engine->GetNumberOfSafeguardFallbacks());
   return true;
 }
 
@@ -587,7 +590,8 @@ int main(int argc, char* argv[])
   }
   if (what == "surface" || what == "all")
   {
-    ok = ok && SurfaceTiming(512, 256) && SurfaceTiming(1024, 512) && SurfaceTarget();
+    ok = ok && SurfaceTiming(512, 256, true) && SurfaceTiming(512, 256, false) &&
+      SurfaceTiming(1024, 512, true) && SurfaceTiming(1024, 512, false) && SurfaceTarget();
   }
   if (what == "lifetime" || what == "all")
   {

@@ -111,3 +111,114 @@ TEST(SurfaceEngine, ConstrainedCentroidsMatchTheCpu)
   }
   EXPECT_GE(samePixel, 145);
 }
+namespace
+{
+/// Pixels whose label is not (within float error) a nearest site in 3D, by brute force.
+int CountSurfaceMislabels(
+  const cvt::GeometryImage& gi, const std::vector<double>& sites, const std::vector<int>& labels)
+{
+  const int n = static_cast<int>(sites.size() / 3);
+  const auto distance2 = [&](long long p, int s)
+  {
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      d2 += std::pow(gi.Position[3 * p + c] - sites[3 * s + c], 2);
+    }
+    return d2;
+  };
+  int wrong = 0;
+  for (long long p = 0; p < gi.NumberOfPixels(); ++p)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (int s = 0; s < n; ++s)
+    {
+      best = std::min(best, distance2(p, s));
+    }
+    wrong += labels[p] < 0 || distance2(p, labels[p]) > best * (1.0 + 1e-5) ? 1 : 0;
+  }
+  return wrong;
+}
+}
+
+TEST(SurfaceEngine, AdaptiveStepLabelsLikeTheFullStep)
+{
+  // Once the sites are known to be spread, the labelling starts from a shorter step (fewer
+  // passes) and labels as the full 1+JFA does.
+  const cvt::GeometryImage gi = TorusGeometryImage(256, 128);
+  std::vector<long long> pixels;
+  const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 400, 4, pixels);
+  vtkNew<vtkCVTSurfaceEngine> adaptive, full;
+  full->AdaptiveStepOff();
+  cvt::CellSums sums, fullSums;
+  std::vector<int> adaptiveLabels, fullLabels;
+  for (vtkCVTSurfaceEngine* engine : { adaptive.Get(), full.Get() })
+  {
+    ASSERT_TRUE(engine->SetGeometryImage(gi)) << engine->GetLastError();
+    ASSERT_TRUE(engine->SetSites(sites, pixels)) << engine->GetLastError();
+    ASSERT_TRUE(engine->ComputeCellSums(sums)) << engine->GetLastError();
+    EXPECT_EQ(engine->GetLastInitialStep(), 128); // nothing known yet: the full step
+    ASSERT_TRUE(engine->ComputeCellSums(engine == full.Get() ? fullSums : sums));
+  }
+  ASSERT_TRUE(adaptive->GetLabels(adaptiveLabels));
+  ASSERT_TRUE(full->GetLabels(fullLabels));
+  int differ = 0;
+  for (size_t p = 0; p < fullLabels.size(); ++p)
+  {
+    differ += adaptiveLabels[p] != fullLabels[p] ? 1 : 0;
+  }
+  const int wrong = CountSurfaceMislabels(gi, sites, adaptiveLabels);
+  std::cout << "[ measured ] surface adaptive 1+JFA: initial step "
+            << adaptive->GetLastInitialStep() << " (full 128), largest cell radius "
+            << adaptive->GetLastMaximumCellRadius() << " pixels; " << differ
+            << " pixels differ from the full 1+JFA, " << wrong << " of " << gi.NumberOfPixels()
+            << " mislabelled\n";
+  EXPECT_LT(adaptive->GetLastInitialStep(), 128);
+  EXPECT_EQ(full->GetLastInitialStep(), 128);
+  EXPECT_EQ(adaptive->GetNumberOfSafeguardFallbacks(), 0);
+  EXPECT_LE(differ, gi.NumberOfPixels() / 1000);
+  EXPECT_LE(wrong, gi.NumberOfPixels() / 200); // as the full step: under 0.5%
+  for (int s = 0; s < 400; ++s)
+  {
+    EXPECT_NEAR(sums.Mass[s], fullSums.Mass[s], 1e-2 * fullSums.Mass[s] + 1e-9) << "site " << s;
+  }
+}
+
+TEST(SurfaceEngine, SafeguardFallsBackWhenSitesJump)
+{
+  // The same number of sites crowded into a corner of the image but one: cells far larger than
+  // the shortened step reaches. The safeguard must label again from the full step.
+  const cvt::GeometryImage gi = TorusGeometryImage(256, 128);
+  std::vector<long long> pixels;
+  const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 400, 9, pixels);
+  vtkNew<vtkCVTSurfaceEngine> engine;
+  ASSERT_TRUE(engine->SetGeometryImage(gi));
+  ASSERT_TRUE(engine->SetSites(sites, pixels));
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine->ComputeCellSums(sums));
+  ASSERT_TRUE(engine->ComputeCellSums(sums));
+  ASSERT_LT(engine->GetLastInitialStep(), 128);
+
+  std::vector<double> crowded(sites.size());
+  std::vector<long long> crowdedPixels(pixels.size());
+  for (size_t s = 0; s < crowdedPixels.size(); ++s)
+  {
+    const long long p = s == 0 ? 100 * 256 + 200 : static_cast<long long>(s / 20) * 256 + s % 20;
+    crowdedPixels[s] = p;
+    for (int c = 0; c < 3; ++c)
+    {
+      crowded[3 * s + c] = gi.Position[3 * p + c];
+    }
+  }
+  const int before = engine->GetNumberOfSafeguardFallbacks();
+  ASSERT_TRUE(engine->SetSites(crowded, crowdedPixels));
+  ASSERT_TRUE(engine->ComputeCellSums(sums));
+  EXPECT_EQ(engine->GetNumberOfSafeguardFallbacks(), before + 1);
+  EXPECT_EQ(engine->GetLastInitialStep(), 128);
+  std::vector<int> labels;
+  ASSERT_TRUE(engine->GetLabels(labels));
+  const int wrong = CountSurfaceMislabels(gi, crowded, labels);
+  std::cout << "[ measured ] surface safeguard: " << wrong << " of " << gi.NumberOfPixels()
+            << " mislabelled after the fallback\n";
+  EXPECT_LE(wrong, gi.NumberOfPixels() / 200);
+}
