@@ -4,9 +4,15 @@
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtk_glew.h"
+
+#include <chrono>
 
 //------------------------------------------------------------------------------
-vtkCVTGPUEngine::vtkCVTGPUEngine() = default;
+vtkCVTGPUEngine::vtkCVTGPUEngine(const char* distance)
+  : Flooding(new vtkCVTJumpFlooding(distance))
+{
+}
 
 //------------------------------------------------------------------------------
 vtkCVTGPUEngine::~vtkCVTGPUEngine() = default;
@@ -35,25 +41,59 @@ void vtkCVTGPUEngine::ReleaseGraphicsResources()
   {
     cvtgl::ScopedContext current(this->Context);
     this->ReleaseObjects(this->Context->GetRenderWindow());
+    this->Flooding->Release(this->Context->GetRenderWindow());
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTGPUEngine::LabelAndReduce(cvt::CellSums& sums)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto millisecondsSince = [](Clock::time_point start)
+  { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); };
+  for (int initialStep = this->Flooding->GetInitialStep(this->AdaptiveStep);;
+       initialStep = this->Flooding->GetFullStep())
+  {
+    auto start = Clock::now();
+    if (!this->Label(initialStep))
+    {
+      return false;
+    }
+    if (this->MeasureTimings)
+    {
+      glFinish();
+    }
+    this->LastLabelMilliseconds = millisecondsSince(start);
+    start = Clock::now();
+    double maximumRadius = 0.0;
+    if (!this->Reduce(sums, maximumRadius))
+    {
+      return false;
+    }
+    this->LastReductionMilliseconds = millisecondsSince(start);
+    if (this->Flooding->AcceptLabelling(initialStep, maximumRadius))
+    {
+      return true;
+    }
   }
 }
 
 //------------------------------------------------------------------------------
 int vtkCVTGPUEngine::GetLastInitialStep() const
 {
-  return this->GetJumpFlooding().GetLastInitialStep();
+  return this->Flooding->GetLastInitialStep();
 }
 
 //------------------------------------------------------------------------------
 int vtkCVTGPUEngine::GetNumberOfSafeguardFallbacks() const
 {
-  return this->GetJumpFlooding().GetNumberOfFallbacks();
+  return this->Flooding->GetNumberOfFallbacks();
 }
 
 //------------------------------------------------------------------------------
 double vtkCVTGPUEngine::GetLastMaximumCellRadius() const
 {
-  return this->GetJumpFlooding().GetLastMaximumRadius();
+  return this->Flooding->GetLastMaximumRadius();
 }
 
 //------------------------------------------------------------------------------

@@ -15,8 +15,13 @@
 #include "vtkNew.h"             // for Context
 #include "vtkObject.h"
 
+#include <memory> // for unique_ptr
 #include <string> // for std::string
 
+namespace cvt
+{
+struct CellSums;
+}
 class vtkCVTJumpFlooding;
 class vtkCVTOpenGLContext;
 class vtkOpenGLRenderWindow;
@@ -73,16 +78,29 @@ public:
   double GetLastReductionMilliseconds() const { return this->LastReductionMilliseconds; }
 
 protected:
-  vtkCVTGPUEngine();
+  /** `distance`: the jump flooding's distance, vtkCVTPlaneDistance or vtkCVTSurfaceDistance. */
+  explicit vtkCVTGPUEngine(const char* distance);
   ~vtkCVTGPUEngine() override;
 
   /** Free the subclass's GL objects; `window`'s context is current. */
   virtual void ReleaseObjects(vtkOpenGLRenderWindow* window) = 0;
 
-  /** The subclass's jump flooding pass. */
-  virtual const vtkCVTJumpFlooding& GetJumpFlooding() const = 0;
+  ///@{
+  /**
+   * The two halves of ComputeCellSums, on the current context: label every pixel (seed, then
+   * 1+JFA from `initialStep`); then the cell sums of that labelling and the largest distance,
+   * in pixels, of a pixel from its site.
+   */
+  virtual bool Label(int initialStep) = 0;
+  virtual bool Reduce(cvt::CellSums& sums, double& maximumRadius) = 0;
+  ///@}
+
+  /** Label and Reduce from the adaptive (or full) step, again from the full step when the
+   * safeguard asks, timed. */
+  bool LabelAndReduce(cvt::CellSums& sums);
 
   vtkNew<vtkCVTOpenGLContext> Context;
+  std::unique_ptr<vtkCVTJumpFlooding> Flooding;
   bool AdaptiveStep = true;
   bool MeasureTimings = false;
   double LastLabelMilliseconds = 0.0;

@@ -25,7 +25,6 @@
 #include "vtkCVTSplitPixelsFS.h"
 
 #include <algorithm>
-#include <chrono>
 #include <climits>
 #include <cmath>
 
@@ -36,20 +35,13 @@ using namespace cvtgl;
 namespace
 {
 constexpr int MaxCandidates = 4; // must match vtkCVTSplitPixelsFS.glsl
-
-using Clock = std::chrono::steady_clock;
-double MillisecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 }
 
 /// GL objects: textures, their framebuffers and the shader programs.
 struct vtkCVTOpenGLEngine::Internals
 {
   vtkNew<vtkTextureObject> Density;
-  vtkCVTJumpFlooding Flooding{ vtkCVTPlaneDistance }; // jump flooding ping-pong
-  vtkNew<vtkTextureObject> Sites[2];                  // Lloyd ping-pong
+  vtkNew<vtkTextureObject> Sites[2];              // Lloyd ping-pong
   vtkNew<vtkTextureObject> Candidates;            // split pixels: candidate sites and collectors
   vtkNew<vtkTextureObject> Pieces[MaxCandidates]; // split pixels: each candidate's piece
   // Per slot: the cell sums, and the largest distance of a pixel from its site (pixels).
@@ -80,7 +72,6 @@ struct vtkCVTOpenGLEngine::Internals
       this->Sites[i]->ReleaseGraphicsResources(window);
       this->SitesFramebuffer[i]->ReleaseGraphicsResources(window);
     }
-    this->Flooding.Release(window);
     this->EmptyVertexArray->ReleaseGraphicsResources();
     for (auto* quad : { &this->SplitQuad, &this->CollectQuad, &this->LloydQuad })
     {
@@ -96,7 +87,8 @@ struct vtkCVTOpenGLEngine::Internals
 
 //------------------------------------------------------------------------------
 vtkCVTOpenGLEngine::vtkCVTOpenGLEngine()
-  : Internal(new Internals)
+  : vtkCVTGPUEngine(vtkCVTPlaneDistance)
+  , Internal(new Internals)
 {
 }
 
@@ -110,12 +102,6 @@ vtkCVTOpenGLEngine::~vtkCVTOpenGLEngine()
 void vtkCVTOpenGLEngine::ReleaseObjects(vtkOpenGLRenderWindow* window)
 {
   this->Internal->Release(window);
-}
-
-//------------------------------------------------------------------------------
-const vtkCVTJumpFlooding& vtkCVTOpenGLEngine::GetJumpFlooding() const
-{
-  return this->Internal->Flooding;
 }
 
 //------------------------------------------------------------------------------
@@ -165,7 +151,7 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   this->Metric[1] = static_cast<float>(grid.Spacing[1]);
   this->NumberOfSites = 0;
   bool ok = AllocateFloatTexture(in.Density, window, grid.Width, grid.Height, 1, density.data());
-  ok = ok && in.Flooding.Allocate(window, grid.Width, grid.Height);
+  ok = ok && this->Flooding->Allocate(window, grid.Width, grid.Height);
   ok = ok && AllocateFloatTexture(in.Candidates, window, grid.Width, grid.Height, 4);
   for (int k = 0; k < MaxCandidates && ok; ++k)
   {
@@ -187,7 +173,8 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   }
   if (!ok)
   {
-    in.Release(window);
+    this->ReleaseObjects(window);
+    this->Flooding->Release(window);
     return this->Fail("the GPU could not allocate float textures for a " +
       std::to_string(grid.Width) + " x " + std::to_string(grid.Height) + " grid");
   }
@@ -241,7 +228,7 @@ bool vtkCVTOpenGLEngine::SetSites(const std::vector<double>& sites)
   in.HaveSums = false;
   if (n != this->NumberOfSites)
   {
-    in.Flooding.ForgetSpacing();
+    this->Flooding->ForgetSpacing();
   }
   this->NumberOfSites = n;
   this->SlotSize[0] = slotWidth;
@@ -287,8 +274,8 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   in.EmptyVertexArray->Bind();
   for (int pass = 0; pass < 2; ++pass)
   {
-    in.Flooding.GetFramebuffer(pass)->Bind();
-    in.Flooding.GetFramebuffer(pass)->ActivateDrawBuffers(1);
+    this->Flooding->GetFramebuffer(pass)->Bind();
+    this->Flooding->GetFramebuffer(pass)->ActivateDrawBuffers(1);
     if (pass == 0)
     {
       state->vtkglClearColor(0.0f, 0.0f, -1.0f, 0.0f);
@@ -298,25 +285,25 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
     else
     {
       // Start from the first pass's seeds.
-      in.Flooding.GetFramebuffer(0)->Bind(GL_READ_FRAMEBUFFER);
-      in.Flooding.GetFramebuffer(0)->ActivateReadBuffer(0);
+      this->Flooding->GetFramebuffer(0)->Bind(GL_READ_FRAMEBUFFER);
+      this->Flooding->GetFramebuffer(0)->ActivateReadBuffer(0);
       state->vtkglBlitFramebuffer(0, 0, this->GridSize[0], this->GridSize[1], 0, 0,
         this->GridSize[0], this->GridSize[1], GL_COLOR_BUFFER_BIT, GL_NEAREST);
       state->vtkglClearDepth(1.0);
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-      in.Flooding.GetTexture(0)->Activate();
-      seed->SetUniformi("placed", in.Flooding.GetTexture(0)->GetTextureUnit());
+      this->Flooding->GetTexture(0)->Activate();
+      seed->SetUniformi("placed", this->Flooding->GetTexture(0)->GetTextureUnit());
     }
     seed->SetUniformi("secondChance", pass);
     glDrawArrays(GL_POINTS, 0, this->NumberOfSites);
   }
-  in.Flooding.GetTexture(0)->Deactivate();
+  this->Flooding->GetTexture(0)->Deactivate();
   in.EmptyVertexArray->Release();
   in.Sites[in.CurrentSites]->Deactivate();
   state->vtkglDisable(GL_DEPTH_TEST);
 
   // 1+JFA from the seeds in texture 1.
-  const int labelled = in.Flooding.Flood(window, 1, initialStep, this->GridSize,
+  const int labelled = this->Flooding->Flood(window, 1, initialStep, this->GridSize,
     [this](vtkShaderProgram* jump) { jump->SetUniform2f("metric", this->Metric); });
   if (labelled < 0)
   {
@@ -329,14 +316,37 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
 }
 
 //------------------------------------------------------------------------------
-bool vtkCVTOpenGLEngine::Reduce()
+bool vtkCVTOpenGLEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
+{
+  if (!this->ScatterToSlots())
+  {
+    return false;
+  }
+  std::vector<float> texels, radius;
+  this->Internal->Reduction.Read(this->Context->GetRenderWindow(), 0, texels);
+  this->Internal->Reduction.Read(this->Context->GetRenderWindow(), 1, radius);
+  sums.Resize(this->NumberOfSites);
+  maximumRadius = 0.0;
+  for (int i = 0; i < this->NumberOfSites; ++i)
+  {
+    sums.Mass[i] = texels[4 * i + 0];
+    sums.MomentX[i] = texels[4 * i + 1];
+    sums.MomentY[i] = texels[4 * i + 2];
+    sums.Energy[i] = texels[4 * i + 3];
+    maximumRadius = std::max(maximumRadius, static_cast<double>(radius[i]));
+  }
+  return this->CheckGLError("reading the reduction back");
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTOpenGLEngine::ScatterToSlots()
 {
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
-  vtkTextureObject* seeds = in.Flooding.GetTexture(in.CurrentSeeds);
+  vtkTextureObject* seeds = this->Flooding->GetTexture(in.CurrentSeeds);
   // The other jump flooding texture is free now: it receives the collected sums.
-  vtkTextureObject* collected = in.Flooding.GetTexture(1 - in.CurrentSeeds);
+  vtkTextureObject* collected = this->Flooding->GetTexture(1 - in.CurrentSeeds);
 
   vtkOpenGLState::ScopedglViewport viewport(state);
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
@@ -375,8 +385,8 @@ bool vtkCVTOpenGLEngine::Reduce()
     state->PopFramebufferBindings();
     return this->Fail("the collecting shader did not compile");
   }
-  in.Flooding.GetFramebuffer(1 - in.CurrentSeeds)->Bind();
-  in.Flooding.GetFramebuffer(1 - in.CurrentSeeds)->ActivateDrawBuffers(1);
+  this->Flooding->GetFramebuffer(1 - in.CurrentSeeds)->Bind();
+  this->Flooding->GetFramebuffer(1 - in.CurrentSeeds)->ActivateDrawBuffers(1);
   in.Candidates->Activate();
   collect->SetUniformi("candidates", in.Candidates->GetTextureUnit());
   const char* pieceNames[MaxCandidates] = { "piece0", "piece1", "piece2", "piece3" };
@@ -418,26 +428,6 @@ bool vtkCVTOpenGLEngine::Reduce()
 }
 
 //------------------------------------------------------------------------------
-bool vtkCVTOpenGLEngine::ReadSums(cvt::CellSums& sums, double& maximumRadius)
-{
-  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
-  std::vector<float> texels, radius;
-  this->Internal->Reduction.Read(window, 0, texels);
-  this->Internal->Reduction.Read(window, 1, radius);
-  sums.Resize(this->NumberOfSites);
-  maximumRadius = 0.0;
-  for (int i = 0; i < this->NumberOfSites; ++i)
-  {
-    sums.Mass[i] = texels[4 * i + 0];
-    sums.MomentX[i] = texels[4 * i + 1];
-    sums.MomentY[i] = texels[4 * i + 2];
-    sums.Energy[i] = texels[4 * i + 3];
-    maximumRadius = std::max(maximumRadius, static_cast<double>(radius[i]));
-  }
-  return this->CheckGLError("reading the reduction back");
-}
-
-//------------------------------------------------------------------------------
 bool vtkCVTOpenGLEngine::ComputeCellSums(cvt::CellSums& sums)
 {
   if (this->NumberOfSites <= 0)
@@ -445,32 +435,7 @@ bool vtkCVTOpenGLEngine::ComputeCellSums(cvt::CellSums& sums)
     return this->Fail("SetSites must succeed before ComputeCellSums");
   }
   ScopedContext current(this->Context);
-  vtkCVTJumpFlooding& flooding = this->Internal->Flooding;
-  for (int initialStep = flooding.GetInitialStep(this->AdaptiveStep);;
-       initialStep = flooding.GetFullStep())
-  {
-    auto start = Clock::now();
-    if (!this->Label(initialStep))
-    {
-      return false;
-    }
-    if (this->MeasureTimings)
-    {
-      glFinish();
-    }
-    this->LastLabelMilliseconds = MillisecondsSince(start);
-    start = Clock::now();
-    double maximumRadius = 0.0;
-    if (!this->Reduce() || !this->ReadSums(sums, maximumRadius))
-    {
-      return false;
-    }
-    this->LastReductionMilliseconds = MillisecondsSince(start);
-    if (flooding.AcceptLabelling(initialStep, maximumRadius))
-    {
-      return true;
-    }
-  }
+  return this->LabelAndReduce(sums);
 }
 
 //------------------------------------------------------------------------------
@@ -552,7 +517,7 @@ bool vtkCVTOpenGLEngine::GetLabels(std::vector<int>& labels)
   Internals& in = *this->Internal;
   const size_t pixels = static_cast<size_t>(this->Grid.NumberOfPixels());
   std::vector<float> texels(4 * pixels);
-  ReadTarget(in.Flooding.GetFramebuffer(in.CurrentSeeds), this->Context->GetRenderWindow(), 0,
+  ReadTarget(this->Flooding->GetFramebuffer(in.CurrentSeeds), this->Context->GetRenderWindow(), 0,
     this->Grid.Width, this->Grid.Height, GL_RGBA, texels.data());
   labels.resize(pixels);
   for (size_t p = 0; p < pixels; ++p)

@@ -61,7 +61,8 @@ protected:
   vtkCVTOpenGLEngine();
   ~vtkCVTOpenGLEngine() override;
   void ReleaseObjects(vtkOpenGLRenderWindow* window) override;
-  const vtkCVTJumpFlooding& GetJumpFlooding() const override;
+  bool Label(int initialStep) override;
+  bool Reduce(cvt::CellSums& sums, double& maximumRadius) override;
 
 private:
   vtkCVTOpenGLEngine(const vtkCVTOpenGLEngine&) = delete;
@@ -70,9 +71,7 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Internal;
 
-  bool Label(int initialStep);
-  bool Reduce();
-  bool ReadSums(cvt::CellSums& sums, double& maximumRadius);
+  bool ScatterToSlots();
   bool CheckGLError(const char* where);
 
   cvt::Grid Grid;

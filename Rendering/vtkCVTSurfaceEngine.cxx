@@ -24,7 +24,6 @@
 #include "vtkCVTSurfaceSeedVS.h"
 
 #include <algorithm>
-#include <chrono>
 #include <climits>
 #include <cmath>
 
@@ -32,20 +31,10 @@ vtkStandardNewMacro(vtkCVTSurfaceEngine);
 
 using namespace cvtgl;
 
-namespace
-{
-using Clock = std::chrono::steady_clock;
-double MillisecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-}
-
 struct vtkCVTSurfaceEngine::Internals
 {
   vtkNew<vtkTextureObject> Positions; // (x, y, z, valid)
   vtkNew<vtkTextureObject> Weights;
-  vtkCVTJumpFlooding Flooding{ vtkCVTSurfaceDistance }; // jump flooding ping-pong
   vtkNew<vtkTextureObject> Sites;
   // Per slot: the cell sums, the energy, and the largest pixel distance from the site's pixel.
   vtkCVTSlotReduction Reduction{ { { 4, vtkCVTSlotReduction::Blend::Sum },
@@ -76,7 +65,6 @@ struct vtkCVTSurfaceEngine::Internals
     }
     this->Reduction.Release(window);
     this->EmptyVertexArray->ReleaseGraphicsResources();
-    this->Flooding.Release(window);
     if (this->NearestQuad)
     {
       this->NearestQuad->ReleaseGraphicsResources(window);
@@ -87,7 +75,8 @@ struct vtkCVTSurfaceEngine::Internals
 
 //------------------------------------------------------------------------------
 vtkCVTSurfaceEngine::vtkCVTSurfaceEngine()
-  : Internal(new Internals)
+  : vtkCVTGPUEngine(vtkCVTSurfaceDistance)
+  , Internal(new Internals)
 {
 }
 
@@ -101,12 +90,6 @@ vtkCVTSurfaceEngine::~vtkCVTSurfaceEngine()
 void vtkCVTSurfaceEngine::ReleaseObjects(vtkOpenGLRenderWindow* window)
 {
   this->Internal->Release(window);
-}
-
-//------------------------------------------------------------------------------
-const vtkCVTJumpFlooding& vtkCVTSurfaceEngine::GetJumpFlooding() const
-{
-  return this->Internal->Flooding;
 }
 
 //------------------------------------------------------------------------------
@@ -164,13 +147,14 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
   bool ok =
     AllocateFloatTexture(in.Positions, window, image.Width, image.Height, 4, positions.data()) &&
     AllocateFloatTexture(in.Weights, window, image.Width, image.Height, 1, image.AreaWeight.data());
-  ok = ok && in.Flooding.Allocate(window, image.Width, image.Height);
+  ok = ok && this->Flooding->Allocate(window, image.Width, image.Height);
   ok = ok && AllocateFloatTexture(in.NearestPoints, window, image.Width, image.Height, 4) &&
     AllocateFloatTexture(in.NearestCorners, window, image.Width, image.Height, 1) &&
     AttachTargets(in.NearestPixelsFramebuffer, window, in.NearestPoints, in.NearestCorners);
   if (!ok)
   {
-    in.Release(window);
+    this->ReleaseObjects(window);
+    this->Flooding->Release(window);
     return this->Fail("the GPU could not allocate the geometry image textures");
   }
   double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
@@ -239,7 +223,7 @@ bool vtkCVTSurfaceEngine::SetSites(
   }
   if (n != this->NumberOfSites)
   {
-    in.Flooding.ForgetSpacing();
+    this->Flooding->ForgetSpacing();
   }
   this->NumberOfSites = n;
   this->SlotSize[0] = slotWidth;
@@ -255,32 +239,7 @@ bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
     return this->Fail("SetSites must succeed before ComputeCellSums");
   }
   ScopedContext current(this->Context);
-  vtkCVTJumpFlooding& flooding = this->Internal->Flooding;
-  for (int initialStep = flooding.GetInitialStep(this->AdaptiveStep);;
-       initialStep = flooding.GetFullStep())
-  {
-    auto start = Clock::now();
-    if (!this->Label(initialStep))
-    {
-      return false;
-    }
-    if (this->MeasureTimings)
-    {
-      glFinish();
-    }
-    this->LastLabelMilliseconds = MillisecondsSince(start);
-    start = Clock::now();
-    double maximumRadius = 0.0;
-    if (!this->Reduce(sums, maximumRadius))
-    {
-      return false;
-    }
-    this->LastReductionMilliseconds = MillisecondsSince(start);
-    if (flooding.AcceptLabelling(initialStep, maximumRadius))
-    {
-      return true;
-    }
-  }
+  return this->LabelAndReduce(sums);
 }
 
 //------------------------------------------------------------------------------
@@ -307,7 +266,7 @@ bool vtkCVTSurfaceEngine::Label(int initialStep)
     return this->Fail("the surface seed shader did not compile");
   }
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
-  BindForNearestScatter(in.Flooding.GetFramebuffer(0), window);
+  BindForNearestScatter(this->Flooding->GetFramebuffer(0), window);
   in.Sites->Activate();
   seed->SetUniformi("sites", in.Sites->GetTextureUnit());
   seed->SetUniform2i("slotSize", this->SlotSize);
@@ -321,7 +280,7 @@ bool vtkCVTSurfaceEngine::Label(int initialStep)
 
   // 1+JFA from the seeds in texture 0.
   in.Positions->Activate();
-  const int labelled = in.Flooding.Flood(window, 0, initialStep, this->GridSize,
+  const int labelled = this->Flooding->Flood(window, 0, initialStep, this->GridSize,
     [this](vtkShaderProgram* jump)
     {
       jump->SetUniformi("positions", this->Internal->Positions->GetTextureUnit());
@@ -348,7 +307,7 @@ bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
   {
     return this->Fail("the surface reduction shader did not compile");
   }
-  vtkTextureObject* seeds = in.Flooding.GetTexture(in.CurrentSeeds);
+  vtkTextureObject* seeds = this->Flooding->GetTexture(in.CurrentSeeds);
   seeds->Activate();
   in.Positions->Activate();
   in.Weights->Activate();
@@ -394,7 +353,7 @@ bool vtkCVTSurfaceEngine::GetLabels(std::vector<int>& labels)
   ScopedContext current(this->Context);
   const size_t pixels = static_cast<size_t>(this->GridSize[0]) * this->GridSize[1];
   std::vector<float> texels(4 * pixels);
-  ReadTarget(this->Internal->Flooding.GetFramebuffer(this->Internal->CurrentSeeds),
+  ReadTarget(this->Flooding->GetFramebuffer(this->Internal->CurrentSeeds),
     this->Context->GetRenderWindow(), 0, this->GridSize[0], this->GridSize[1], GL_RGBA,
     texels.data());
   labels.resize(pixels);
@@ -488,7 +447,7 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   in.NearestPixelsFramebuffer->Bind();
   in.NearestPixelsFramebuffer->ActivateDrawBuffers(2);
-  vtkTextureObject* seeds = in.Flooding.GetTexture(in.CurrentSeeds);
+  vtkTextureObject* seeds = this->Flooding->GetTexture(in.CurrentSeeds);
   seeds->Activate();
   in.Positions->Activate();
   in.Targets->Activate();

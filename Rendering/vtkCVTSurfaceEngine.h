@@ -44,7 +44,8 @@ protected:
   vtkCVTSurfaceEngine();
   ~vtkCVTSurfaceEngine() override;
   void ReleaseObjects(vtkOpenGLRenderWindow* window) override;
-  const vtkCVTJumpFlooding& GetJumpFlooding() const override;
+  bool Label(int initialStep) override;
+  bool Reduce(cvt::CellSums& sums, double& maximumRadius) override;
 
 private:
   vtkCVTSurfaceEngine(const vtkCVTSurfaceEngine&) = delete;
@@ -54,8 +55,6 @@ private:
   std::unique_ptr<Internals> Internal;
 
   bool CheckGLError(const char* where);
-  bool Label(int initialStep);
-  bool Reduce(cvt::CellSums& sums, double& maximumRadius);
   bool AttachNearestTargets(int width, int height);
 
   cvt::GeometryImage Image; // for the CPU fallback of NearestPointsInCells

@@ -14,6 +14,36 @@
 
 using cvttest::TorusGeometryImage;
 
+namespace
+{
+/// Pixels whose label is not (within float error) a nearest site in 3D, by brute force.
+int CountSurfaceMislabels(
+  const cvt::GeometryImage& gi, const std::vector<double>& sites, const std::vector<int>& labels)
+{
+  const int n = static_cast<int>(sites.size() / 3);
+  const auto distance2 = [&](long long p, int s)
+  {
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      d2 += std::pow(gi.Position[3 * p + c] - sites[3 * s + c], 2);
+    }
+    return d2;
+  };
+  int wrong = 0;
+  for (long long p = 0; p < gi.NumberOfPixels(); ++p)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (int s = 0; s < n; ++s)
+    {
+      best = std::min(best, distance2(p, s));
+    }
+    wrong += labels[p] < 0 || distance2(p, labels[p]) > best * (1.0 + 1e-5) ? 1 : 0;
+  }
+  return wrong;
+}
+}
+
 TEST(SurfaceEngine, LabelsAndSumsMatchTheCpu)
 {
   // Enough sites that Euclidean cells stay small against the tube radius (few large cells
@@ -31,28 +61,13 @@ TEST(SurfaceEngine, LabelsAndSumsMatchTheCpu)
 
   // Brute force: the nearest site in 3D of every pixel; and the weighted sums over the GPU's
   // labels (so that the reduction is checked on its own).
+  const int wrong = CountSurfaceMislabels(gi, sites, labels);
   cvt::CellSums cpu;
   cpu.Resize(200, true);
-  int wrong = 0;
-  const auto distance2 = [&](long long p, int s)
-  {
-    double d2 = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      d2 += std::pow(gi.Position[3 * p + c] - sites[3 * s + c], 2);
-    }
-    return d2;
-  };
   for (long long p = 0; p < gi.NumberOfPixels(); ++p)
   {
-    double best = std::numeric_limits<double>::infinity();
-    for (int s = 0; s < 200; ++s)
-    {
-      best = std::min(best, distance2(p, s));
-    }
     const int label = labels[p];
     ASSERT_GE(label, 0);
-    wrong += distance2(p, label) > best * (1.0 + 1e-5) ? 1 : 0;
     const double w = gi.AreaWeight[p];
     const double d[3] = { gi.Position[3 * p] - sites[3 * label],
       gi.Position[3 * p + 1] - sites[3 * label + 1],
@@ -111,36 +126,6 @@ TEST(SurfaceEngine, ConstrainedCentroidsMatchTheCpu)
   }
   EXPECT_GE(samePixel, 145);
 }
-namespace
-{
-/// Pixels whose label is not (within float error) a nearest site in 3D, by brute force.
-int CountSurfaceMislabels(
-  const cvt::GeometryImage& gi, const std::vector<double>& sites, const std::vector<int>& labels)
-{
-  const int n = static_cast<int>(sites.size() / 3);
-  const auto distance2 = [&](long long p, int s)
-  {
-    double d2 = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      d2 += std::pow(gi.Position[3 * p + c] - sites[3 * s + c], 2);
-    }
-    return d2;
-  };
-  int wrong = 0;
-  for (long long p = 0; p < gi.NumberOfPixels(); ++p)
-  {
-    double best = std::numeric_limits<double>::infinity();
-    for (int s = 0; s < n; ++s)
-    {
-      best = std::min(best, distance2(p, s));
-    }
-    wrong += labels[p] < 0 || distance2(p, labels[p]) > best * (1.0 + 1e-5) ? 1 : 0;
-  }
-  return wrong;
-}
-}
-
 TEST(SurfaceEngine, AdaptiveStepLabelsLikeTheFullStep)
 {
   // Once the sites are known to be spread, the labelling starts from a shorter step (fewer
