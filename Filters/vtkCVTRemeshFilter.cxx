@@ -60,22 +60,19 @@ struct TopologyRefinement
 };
 
 /// The remesh of `sites`, and while its topology is not the input's, that of `sites` with
-/// sites added where the dual asks for them (RestrictedDual::SplitPoints), each round settled
-/// by `settleIterations` Lloyd iterations. Keeps in `best` the first remesh with the input's
-/// topology, else the closest; false (and `error`) when the engine fails.
+/// sites added where the dual asks for them (RestrictedDual::SplitPoints), in rounds settled by
+/// TopologyRoundIterations[0] Lloyd iterations each; if that fails, again from `sites` with
+/// the next count. Returns the first remesh with the input's topology, else the closest, in
+/// `best`; false (and `error`) when the engine fails.
 bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
-  const cvt::MeshTopology& input, const std::vector<double>& sites, int settleIterations,
+  const cvt::MeshTopology& input, const std::vector<double>& sites,
   const std::function<bool()>& aborted, TopologyRefinement& best, std::string& error)
 {
   cvt::RestrictedProblem problem(engine);
-  cvt::OptimizerResult refined; // the sites of the remesh: the CVT's, then those added
-  refined.Sites = sites;
-  if (!engine.SetSites(sites))
-  {
-    error = engine.GetLastError();
-    return false;
-  }
-  for (int round = 0;; ++round)
+  std::vector<double> firstSplitPoints;
+  // The remesh of the engine's current sites (`added` of them beyond `sites`) if closer to the
+  // input's topology than the best so far; the sites the dual would add next in `splitPoints`.
+  const auto consider = [&](size_t added, std::vector<double>& splitPoints)
   {
     cvt::RestrictedDual dual;
     if (!engine.ComputeDual(dual))
@@ -92,22 +89,45 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
       best.Remesh = std::move(candidate);
       best.Topology = topology;
       best.Mismatch = mismatch;
-      best.AddedSites = static_cast<int>((refined.Sites.size() - sites.size()) / 3);
+      best.AddedSites = static_cast<int>(added);
     }
-    if (mismatch == 0 || dual.SplitPoints.empty() || round == MaximumTopologyRounds || aborted())
+    splitPoints = mismatch == 0 ? std::vector<double>() : std::move(dual.SplitPoints);
+    return true;
+  };
+  if (!engine.SetSites(sites))
+  {
+    error = engine.GetLastError();
+    return false;
+  }
+  if (!consider(0, firstSplitPoints))
+  {
+    return false;
+  }
+  for (int settleIterations : TopologyRoundIterations)
+  {
+    cvt::OptimizerResult refined; // the sites of the remesh: the CVT's, then those added
+    refined.Sites = sites;
+    std::vector<double> splitPoints = firstSplitPoints;
+    for (int round = 1;
+         best.Mismatch != 0 && !splitPoints.empty() && round <= MaximumTopologyRounds && !aborted();
+         ++round)
     {
-      return true;
-    }
-    cvt::SiteState more{ refined.Sites, {} };
-    more.Sites.insert(more.Sites.end(), dual.SplitPoints.begin(), dual.SplitPoints.end());
-    cvt::OptimizerOptions settle;
-    settle.MaximumNumberOfIterations = settleIterations;
-    if (!cvt::RunLloyd(problem, more, settle, nullptr, refined, error))
-    {
-      error = "the surface CVT failed: " + (error.empty() ? engine.GetLastError() : error);
-      return false;
+      cvt::SiteState more{ refined.Sites, {} };
+      more.Sites.insert(more.Sites.end(), splitPoints.begin(), splitPoints.end());
+      cvt::OptimizerOptions settle;
+      settle.MaximumNumberOfIterations = settleIterations;
+      if (!cvt::RunLloyd(problem, more, settle, nullptr, refined, error))
+      {
+        error = "the surface CVT failed: " + (error.empty() ? engine.GetLastError() : error);
+        return false;
+      }
+      if (!consider((refined.Sites.size() - sites.size()) / 3, splitPoints))
+      {
+        return false;
+      }
     }
   }
+  return true;
 }
 
 /// The cleaned, triangulated input (coincident points merged, polygons and strips split).
@@ -336,19 +356,12 @@ bool vtkCVTRemeshFilter::Compute(
   // settling. The CVT's own sites, the output, stay as optimised.
   // The remesh kept is the first whose topology is the input's, else the closest one.
   TopologyRefinement best;
-  for (int iterations : TopologyRoundIterations)
+  if (!RefineForTopology(
+        engine, mesh, inputTopology, result.Sites,
+        [this]() { return this->GetAbortExecute() != 0; }, best, error))
   {
-    if (best.Mismatch == 0 || this->GetAbortExecute())
-    {
-      break;
-    }
-    if (!RefineForTopology(
-          engine, mesh, inputTopology, result.Sites, iterations,
-          [this]() { return this->GetAbortExecute() != 0; }, best, error))
-    {
-      vtkErrorMacro("The remesh failed: " << error << ".");
-      return false;
-    }
+    vtkErrorMacro("The remesh failed: " << error << ".");
+    return false;
   }
   const cvt::Remesh& remesh = best.Remesh;
   const cvt::MeshTopology& remeshTopology = best.Topology;

@@ -61,7 +61,8 @@ public:
   /** Initial JFA step of the last labelling, and how often the safeguard fell back. */
   int GetLastInitialStep() const;
   int GetNumberOfSafeguardFallbacks() const;
-  /** Largest distance (pixels) from a site's pixel to a pixel labelled with it, last labelling. */
+  /** Largest distance (pixels) of a pixel from its site (on a geometry image: from the site's
+   * pixel), last labelling. */
   double GetLastMaximumCellRadius() const;
 
   ///@{

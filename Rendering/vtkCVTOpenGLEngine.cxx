@@ -173,8 +173,7 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   }
   if (!ok)
   {
-    this->ReleaseObjects(window);
-    this->Flooding->Release(window);
+    this->ReleaseGraphicsResources();
     return this->Fail("the GPU could not allocate float textures for a " +
       std::to_string(grid.Width) + " x " + std::to_string(grid.Height) + " grid");
   }

@@ -153,8 +153,7 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
     AttachTargets(in.NearestPixelsFramebuffer, window, in.NearestPoints, in.NearestCorners);
   if (!ok)
   {
-    this->ReleaseObjects(window);
-    this->Flooding->Release(window);
+    this->ReleaseGraphicsResources();
     return this->Fail("the GPU could not allocate the geometry image textures");
   }
   double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
@@ -213,11 +212,14 @@ bool vtkCVTSurfaceEngine::SetSites(
   {
     return this->Fail("the GPU could not allocate the site texture");
   }
-  if (!in.Reduction.Allocate(window, slotSize) ||
-    ((slotWidth != this->SlotSize[0] || slotHeight != this->SlotSize[1] ||
-       !in.Nearest->GetHandle()) &&
-      (!AllocateFloatTexture(in.Nearest, window, slotWidth, slotHeight, 4) ||
-        !this->AttachNearestTargets(slotWidth, slotHeight))))
+  bool ok = in.Reduction.Allocate(window, slotSize);
+  if (ok &&
+    (slotWidth != this->SlotSize[0] || slotHeight != this->SlotSize[1] || !in.Nearest->GetHandle()))
+  {
+    ok = AllocateFloatTexture(in.Nearest, window, slotWidth, slotHeight, 4) &&
+      this->AttachNearestTargets(slotWidth, slotHeight);
+  }
+  if (!ok)
   {
     return this->Fail("the GPU could not allocate the reduction targets");
   }
