@@ -71,6 +71,30 @@ void UnitNormal(const double* p0, const double* p1, const double* p2, double n[3
   }
 }
 
+/// Two orthonormal vectors perpendicular to `normal` (any length); false if it is zero.
+bool TangentBasis(const double normal[3], double u[3], double w[3])
+{
+  const double length = std::sqrt(Dot(normal, normal));
+  if (length <= 0.0)
+  {
+    return false;
+  }
+  const double n[3] = { normal[0] / length, normal[1] / length, normal[2] / length };
+  // Cross with the axis least aligned with n.
+  const int axis = std::fabs(n[0]) < std::fabs(n[1]) ? (std::fabs(n[0]) < std::fabs(n[2]) ? 0 : 2)
+                                                     : (std::fabs(n[1]) < std::fabs(n[2]) ? 1 : 2);
+  double e[3] = { 0.0, 0.0, 0.0 };
+  e[axis] = 1.0;
+  Cross(n, e, u);
+  const double ul = std::sqrt(Dot(u, u));
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] /= ul;
+  }
+  Cross(n, u, w);
+  return true;
+}
+
 /// One candidate flip: the shared edge (a, b) of two triangles becomes (c, d).
 struct EdgeFlip
 {
@@ -307,9 +331,11 @@ private:
 /// Moves free (not pinned) vertices of triangles with a corner under 30 degrees to the mean of
 /// their neighbours, projected onto the input surface, wherever that raises the smallest angle
 /// around them without turning a triangle over: cells cut by a crease leave a few thin
-/// triangles that no flip mends. Returns the number of vertices moved.
+/// triangles that no flip mends. With `search`, where the mean does not widen them enough,
+/// steps in the tangent plane are tried too (a pattern search). Returns the number of vertices
+/// moved.
 int RelaxThinTriangles(
-  Remesh& remesh, const std::vector<char>& pinned, const SurfaceProjector& projector)
+  Remesh& remesh, const std::vector<char>& pinned, const SurfaceProjector& projector, bool search)
 {
   const int vertices = static_cast<int>(remesh.SiteIds.size());
   std::vector<std::vector<int>> around(static_cast<size_t>(vertices)); // incident triangles
@@ -362,6 +388,23 @@ int RelaxThinTriangles(
     }
     return projector.FarthestCentroid(corners);
   };
+  // v at the surface point nearest to `target` if that widens its smallest angle (`current`)
+  // without turning a triangle over or moving its triangles farther than `reach` from the input.
+  const auto tryPlace = [&](int v, const double* target, double reach, double& current)
+  {
+    double q[3], weights[3], after = 0.0;
+    const int triangle = projector.Nearest(target, q, weights);
+    if (triangle < 0 || !smallestAround(v, q, after) || after <= current + 1e-6 ||
+      farthestCentroid(v, q) > reach)
+    {
+      return false;
+    }
+    std::copy(q, q + 3, point(v));
+    std::copy(weights, weights + 3, &remesh.SourceBarycentric[3 * static_cast<size_t>(v)]);
+    remesh.SourceTriangles[static_cast<size_t>(v)] = triangle;
+    current = after;
+    return true;
+  };
   int moved = 0;
   for (int round = 0; round < 3; ++round)
   {
@@ -373,11 +416,18 @@ int RelaxThinTriangles(
       {
         continue;
       }
-      double mean[3] = { 0.0, 0.0, 0.0 };
+      const double reach = 1.1 * farthestCentroid(v, point(v)) + 1e-12;
+      // First the mean of its neighbours (Laplacian smoothing), then, where that is not wide
+      // enough, a pattern search in the tangent plane: steps of a quarter, an eighth and a
+      // sixteenth of the mean edge in eight directions, each taken while it widens.
+      double mean[3] = { 0.0, 0.0, 0.0 }, normal[3] = { 0.0, 0.0, 0.0 };
       int count = 0;
       for (int t : around[static_cast<size_t>(v)])
       {
-        for (int u : remesh.Triangles[static_cast<size_t>(t)])
+        const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+        double n[3];
+        UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), n);
+        for (int u : tri)
         {
           if (u != v)
           {
@@ -388,24 +438,46 @@ int RelaxThinTriangles(
             ++count;
           }
         }
+        for (int k = 0; k < 3; ++k)
+        {
+          normal[k] += n[k];
+        }
       }
-      for (double& m : mean)
+      double edge = 0.0;
+      for (int k = 0; k < 3; ++k)
       {
-        m /= count;
+        mean[k] /= count;
       }
-      double best[3], bestWeights[3];
-      const int bestTriangle = projector.Nearest(mean, best, bestWeights);
-      double after = 0.0;
-      if (bestTriangle < 0 || !smallestAround(v, best, after) || after <= current + 1e-6 ||
-        farthestCentroid(v, best) > 1.1 * farthestCentroid(v, point(v)) + 1e-12)
+      for (int t : around[static_cast<size_t>(v)])
       {
-        continue;
+        for (int u : remesh.Triangles[static_cast<size_t>(t)])
+        {
+          edge += u == v ? 0.0 : std::sqrt(Distance2(point(u), point(v))) / count;
+        }
       }
-      std::copy(best, best + 3, point(v));
-      std::copy(
-        bestWeights, bestWeights + 3, &remesh.SourceBarycentric[3 * static_cast<size_t>(v)]);
-      remesh.SourceTriangles[static_cast<size_t>(v)] = bestTriangle;
-      ++movedThisRound;
+      bool changed = tryPlace(v, mean, reach, current);
+      double tangent[2][3];
+      if (search && current < ThinCorner && TangentBasis(normal, tangent[0], tangent[1]))
+      {
+        for (double step = 0.25 * edge; step > 0.05 * edge; step /= 2.0)
+        {
+          for (int direction = 0, failed = 0; failed < 8 && current < ThinCorner;
+               direction = (direction + 1) % 8)
+          {
+            const double angle = direction * 3.14159265358979323846 / 4.0;
+            double target[3];
+            for (int k = 0; k < 3; ++k)
+            {
+              target[k] = point(v)[k] +
+                step * (std::cos(angle) * tangent[0][k] + std::sin(angle) * tangent[1][k]);
+            }
+            const bool widened = tryPlace(v, target, reach, current);
+            failed = widened ? 0 : failed + 1;
+            changed = changed || widened;
+          }
+        }
+      }
+      movedThisRound += changed ? 1 : 0;
     }
     moved += movedThisRound;
     if (movedThisRound == 0)
@@ -991,16 +1063,19 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     if (surface && anyThin)
     {
       const SurfaceProjector projector(*surface);
-      remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, projector);
+      remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, projector, false);
       remesh.CollapsedEdges = CollapseThinTriangles(remesh, pinned, projector);
       if (remesh.CollapsedEdges > 0)
       {
         // The triangles a collapse widened may now flip or move to wider ones still.
         remesh.FlippedEdges +=
           FlipThinTriangles(remesh.Points, pinned, remesh.Triangles, ThinCorner);
-        remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector);
+        remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, false);
         DropUnusedVertices(remesh);
       }
+      // Last, the thin triangles that neither mended: their free vertices search around them
+      // (after the collapses, which mend needles and caps better than any move).
+      remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, true);
     }
   }
   // Sheets that meet only at a vertex (a part thinner than the cells, a border touching

@@ -721,6 +721,60 @@ TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
   }
 }
 
+TEST(RestrictedVoronoi, RemeshSearchesAroundFreeVerticesWhereTheMeanDoesNotWiden)
+{
+  // A 5 x 5 grid on the plane z = 0, its border pinned and its nine inner points jittered (one
+  // of the random grids where moves to the neighbours' mean stop at a 25-degree corner and no
+  // collapse helps). Searching around the free vertices of the thin triangles left widens them
+  // past 30 degrees, with no vertex lost.
+  const double inner[9][2] = { { 1.26, 1.05 }, { 2.17, 0.87 }, { 3.26, 0.73 }, { 1.07, 2.29 },
+    { 1.90, 1.86 }, { 3.19, 1.76 }, { 0.75, 2.85 }, { 1.88, 3.05 }, { 3.17, 3.29 } };
+  std::vector<std::array<double, 3>> points;
+  std::vector<char> pinned;
+  for (int j = 0, k = 0; j < 5; ++j)
+  {
+    for (int i = 0; i < 5; ++i)
+    {
+      const bool border = i == 0 || i == 4 || j == 0 || j == 4;
+      points.push_back({ border ? i : inner[k][0], border ? j : inner[k][1], 0.0 });
+      k += border ? 0 : 1;
+      pinned.push_back(border);
+    }
+  }
+  cvt::RestrictedDual dual = DualAt(points, false, pinned);
+  for (int i = 0; i < 25; ++i)
+  {
+    dual.OnBoundary[i] = pinned[i];
+  }
+  for (int j = 0; j < 4; ++j)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      const int a = 5 * j + i;
+      dual.Triangles.push_back({ a, a + 1, a + 6 });
+      dual.Triangles.push_back({ a, a + 6, a + 5 });
+    }
+  }
+  cvt::SurfaceMesh plane;
+  plane.Points = { -3, -3, 0, 7, -3, 0, 7, 7, 0, -3, 7, 0 };
+  plane.Triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+  const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
+  const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
+  const double widthBefore = cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle;
+  const double widthAfter = cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle;
+  EXPECT_LT(widthBefore, 25.0);
+  EXPECT_EQ(after.CollapsedEdges, 0);
+  EXPECT_EQ(after.SiteIds.size(), 25u);
+  EXPECT_GE(after.MovedVertices, 1);
+  EXPECT_GT(widthAfter, 30.0);
+  for (size_t v = 0; v < after.SiteIds.size(); ++v)
+  {
+    EXPECT_EQ(after.Points[3 * v + 2], 0.0); // on the surface
+  }
+  std::cout << "[ measured ] smallest angle " << widthBefore << " -> " << widthAfter << " degrees, "
+            << after.MovedVertices << " moves\n";
+}
+
 TEST(RestrictedVoronoi, RemeshCollapsesEdgesThatNoFlipOrMoveMends)
 {
   // A 5 x 5 grid on the unit square, its border pinned, with the middle of the bottom side
