@@ -22,6 +22,7 @@
 #include "vtkCVTReduceFS.h"
 #include "vtkCVTReduceVS.h"
 #include "vtkCVTSeedVS.h"
+#include "vtkCVTSiteSlots.h"
 #include "vtkCVTSplitPixelsFS.h"
 
 #include <algorithm>
@@ -41,20 +42,18 @@ constexpr int MaxCandidates = 4; // must match vtkCVTSplitPixelsFS.glsl
 struct vtkCVTOpenGLEngine::Internals
 {
   vtkNew<vtkTextureObject> Density;
-  vtkNew<vtkTextureObject> Sites[2];              // Lloyd ping-pong
+  vtkCVTSiteSlots Sites{ 2 };                     // two copies: Lloyd steps on the GPU
   vtkNew<vtkTextureObject> Candidates;            // split pixels: candidate sites and collectors
   vtkNew<vtkTextureObject> Pieces[MaxCandidates]; // split pixels: each candidate's piece
   // Per slot: the cell sums, and the largest distance of a pixel from its site (pixels).
   vtkCVTSlotReduction Reduction{ { { 4, vtkCVTSlotReduction::Blend::Sum },
     { 1, vtkCVTSlotReduction::Blend::Maximum } } };
   vtkNew<vtkOpenGLFramebufferObject> SplitFramebuffer;
-  vtkNew<vtkOpenGLFramebufferObject> SitesFramebuffer[2];
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray; // attribute-less point draws
   std::unique_ptr<vtkOpenGLQuadHelper> SplitQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CollectQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> LloydQuad;
   int CurrentSeeds = 0; // which Seeds texture holds the last labelling
-  int CurrentSites = 0;
   bool HaveSums = false;
 
   void Release(vtkOpenGLRenderWindow* window)
@@ -67,11 +66,7 @@ struct vtkCVTOpenGLEngine::Internals
     }
     this->SplitFramebuffer->ReleaseGraphicsResources(window);
     this->Reduction.Release(window);
-    for (int i = 0; i < 2; ++i)
-    {
-      this->Sites[i]->ReleaseGraphicsResources(window);
-      this->SitesFramebuffer[i]->ReleaseGraphicsResources(window);
-    }
+    this->Sites.Release(window);
     this->EmptyVertexArray->ReleaseGraphicsResources();
     for (auto* quad : { &this->SplitQuad, &this->CollectQuad, &this->LloydQuad })
     {
@@ -149,7 +144,7 @@ bool vtkCVTOpenGLEngine::SetDomain(const cvt::Grid& grid, const std::vector<floa
   this->GridSize[1] = grid.Height;
   this->Metric[0] = static_cast<float>(grid.Spacing[0]);
   this->Metric[1] = static_cast<float>(grid.Spacing[1]);
-  this->NumberOfSites = 0;
+  this->Internal->Sites.Forget();
   bool ok = AllocateFloatTexture(in.Density, window, grid.Width, grid.Height, 1, density.data());
   ok = ok && this->Flooding->Allocate(window, grid.Width, grid.Height);
   ok = ok && AllocateFloatTexture(in.Candidates, window, grid.Width, grid.Height, 4);
@@ -192,46 +187,32 @@ bool vtkCVTOpenGLEngine::SetSites(const std::vector<double>& sites)
   {
     return this->Fail("there are no sites");
   }
-  int slotSize[2];
-  if (!LayoutSlots(n, this->Context->GetMaximumTextureSize(), slotSize))
-  {
-    return this->Fail("too many sites for this GPU's textures");
-  }
-  const int slotWidth = slotSize[0], slotHeight = slotSize[1];
-  std::vector<float> texels(static_cast<size_t>(slotWidth) * slotHeight * 4, 0.0f);
-  for (int i = 0; i < n; ++i)
-  {
-    texels[4 * i + 0] =
-      static_cast<float>((sites[2 * i] - this->Grid.Origin[0]) / this->Grid.Spacing[0]);
-    texels[4 * i + 1] =
-      static_cast<float>((sites[2 * i + 1] - this->Grid.Origin[1]) / this->Grid.Spacing[1]);
-  }
-
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   Internals& in = *this->Internal;
-  // The slot textures follow the site count; an optimiser's step only uploads the sites.
-  bool ok = AllocateFloatTexture(in.Sites[0], window, slotWidth, slotHeight, 4, texels.data());
-  if (ok && (slotWidth != this->SlotSize[0] || slotHeight != this->SlotSize[1]))
+  const int before = in.Sites.GetNumberOfSites();
+  // In grid units, as the shaders work.
+  const auto upload = in.Sites.Set(window, n, this->Context->GetMaximumTextureSize(),
+    [&](int i, float* texel)
+    {
+      texel[0] = static_cast<float>((sites[2 * i] - this->Grid.Origin[0]) / this->Grid.Spacing[0]);
+      texel[1] =
+        static_cast<float>((sites[2 * i + 1] - this->Grid.Origin[1]) / this->Grid.Spacing[1]);
+    });
+  if (upload == vtkCVTSiteSlots::Upload::TooManySites)
   {
-    ok = AllocateFloatTexture(in.Sites[1], window, slotWidth, slotHeight, 4) &&
-      AttachTargets(in.SitesFramebuffer[0], window, in.Sites[0]) &&
-      AttachTargets(in.SitesFramebuffer[1], window, in.Sites[1]);
+    return this->Fail("too many sites for this GPU's textures");
   }
-  ok = ok && in.Reduction.Allocate(window, slotSize);
-  if (!ok)
+  if (upload != vtkCVTSiteSlots::Upload::Done ||
+    !in.Reduction.Allocate(window, in.Sites.GetSlotSize()))
   {
     return this->Fail("the GPU could not allocate the site textures");
   }
-  in.CurrentSites = 0;
   in.HaveSums = false;
-  if (n != this->NumberOfSites)
+  if (n != before)
   {
     this->Flooding->ForgetSpacing();
   }
-  this->NumberOfSites = n;
-  this->SlotSize[0] = slotWidth;
-  this->SlotSize[1] = slotHeight;
   return this->CheckGLError("site upload");
 }
 
@@ -265,11 +246,11 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
   state->vtkglDepthMask(GL_TRUE);
-  in.Sites[in.CurrentSites]->Activate();
-  seed->SetUniformi("sites", in.Sites[in.CurrentSites]->GetTextureUnit());
-  seed->SetUniform2i("slotSize", this->SlotSize);
+  in.Sites.GetCurrent()->Activate();
+  seed->SetUniformi("sites", in.Sites.GetCurrent()->GetTextureUnit());
+  seed->SetUniform2i("slotSize", in.Sites.GetSlotSize());
   seed->SetUniform2i("gridSize", this->GridSize);
-  seed->SetUniformi("numberOfSites", this->NumberOfSites);
+  seed->SetUniformi("numberOfSites", in.Sites.GetNumberOfSites());
   in.EmptyVertexArray->Bind();
   for (int pass = 0; pass < 2; ++pass)
   {
@@ -294,11 +275,11 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
       seed->SetUniformi("placed", this->Flooding->GetTexture(0)->GetTextureUnit());
     }
     seed->SetUniformi("secondChance", pass);
-    glDrawArrays(GL_POINTS, 0, this->NumberOfSites);
+    glDrawArrays(GL_POINTS, 0, in.Sites.GetNumberOfSites());
   }
   this->Flooding->GetTexture(0)->Deactivate();
   in.EmptyVertexArray->Release();
-  in.Sites[in.CurrentSites]->Deactivate();
+  in.Sites.GetCurrent()->Deactivate();
   state->vtkglDisable(GL_DEPTH_TEST);
 
   // 1+JFA from the seeds in texture 1.
@@ -321,12 +302,14 @@ bool vtkCVTOpenGLEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
   {
     return false;
   }
+  Internals& in = *this->Internal;
   std::vector<float> texels, radius;
-  this->Internal->Reduction.Read(this->Context->GetRenderWindow(), 0, texels);
-  this->Internal->Reduction.Read(this->Context->GetRenderWindow(), 1, radius);
-  sums.Resize(this->NumberOfSites);
+  in.Reduction.Read(this->Context->GetRenderWindow(), 0, texels);
+  in.Reduction.Read(this->Context->GetRenderWindow(), 1, radius);
+  const int n = in.Sites.GetNumberOfSites();
+  sums.Resize(n);
   maximumRadius = 0.0;
-  for (int i = 0; i < this->NumberOfSites; ++i)
+  for (int i = 0; i < n; ++i)
   {
     sums.Mass[i] = texels[4 * i + 0];
     sums.MomentX[i] = texels[4 * i + 1];
@@ -414,7 +397,7 @@ bool vtkCVTOpenGLEngine::ScatterToSlots()
   reduce->SetUniformi("seeds", seeds->GetTextureUnit());
   reduce->SetUniformi("collected", collected->GetTextureUnit());
   reduce->SetUniform2i("gridSize", this->GridSize);
-  reduce->SetUniform2i("slotSize", this->SlotSize);
+  reduce->SetUniform2i("slotSize", this->Internal->Sites.GetSlotSize());
   reduce->SetUniform2f("metric", this->Metric);
   reduce->SetUniformf("radiusScale",
     static_cast<float>(1.0 / std::min(this->Grid.Spacing[0], this->Grid.Spacing[1])));
@@ -429,7 +412,7 @@ bool vtkCVTOpenGLEngine::ScatterToSlots()
 //------------------------------------------------------------------------------
 bool vtkCVTOpenGLEngine::ComputeCellSums(cvt::CellSums& sums)
 {
-  if (this->NumberOfSites <= 0)
+  if (this->Internal->Sites.GetNumberOfSites() <= 0)
   {
     return this->Fail("SetSites must succeed before ComputeCellSums");
   }
@@ -451,35 +434,34 @@ bool vtkCVTOpenGLEngine::MoveSitesToCentroids()
   vtkOpenGLState::ScopedglViewport viewport(state);
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   state->vtkglDisable(GL_BLEND);
-  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
+  state->vtkglViewport(0, 0, in.Sites.GetSlotSize()[0], in.Sites.GetSlotSize()[1]);
   state->PushFramebufferBindings();
-  const int target = 1 - in.CurrentSites;
-  in.SitesFramebuffer[target]->Bind();
-  in.SitesFramebuffer[target]->ActivateDrawBuffers(1);
+  in.Sites.GetNextFramebuffer()->Bind();
+  in.Sites.GetNextFramebuffer()->ActivateDrawBuffers(1);
   vtkShaderProgram* lloyd = ReadyQuad(in.LloydQuad, window, vtkCVTLloydFS);
   if (!lloyd)
   {
     state->PopFramebufferBindings();
     return this->Fail("the Lloyd update shader did not compile");
   }
-  in.Sites[in.CurrentSites]->Activate();
+  in.Sites.GetCurrent()->Activate();
   vtkTextureObject* cellSums = in.Reduction.GetTexture(0);
   cellSums->Activate();
-  lloyd->SetUniformi("sites", in.Sites[in.CurrentSites]->GetTextureUnit());
+  lloyd->SetUniformi("sites", in.Sites.GetCurrent()->GetTextureUnit());
   lloyd->SetUniformi("sums", cellSums->GetTextureUnit());
-  lloyd->SetUniform2i("slotSize", this->SlotSize);
-  lloyd->SetUniformi("numberOfSites", this->NumberOfSites);
+  lloyd->SetUniform2i("slotSize", in.Sites.GetSlotSize());
+  lloyd->SetUniformi("numberOfSites", in.Sites.GetNumberOfSites());
   lloyd->SetUniform2f("metric", this->Metric);
   lloyd->SetUniform2i("gridSize", this->GridSize);
   in.LloydQuad->Render();
   cellSums->Deactivate();
-  in.Sites[in.CurrentSites]->Deactivate();
+  in.Sites.GetCurrent()->Deactivate();
   state->PopFramebufferBindings();
   if (this->MeasureTimings)
   {
     glFinish();
   }
-  in.CurrentSites = target;
+  in.Sites.Swap();
   in.HaveSums = false;
   return this->CheckGLError("Lloyd update");
 }
@@ -487,17 +469,17 @@ bool vtkCVTOpenGLEngine::MoveSitesToCentroids()
 //------------------------------------------------------------------------------
 bool vtkCVTOpenGLEngine::GetSites(std::vector<double>& sites)
 {
-  if (this->NumberOfSites <= 0)
+  if (this->Internal->Sites.GetNumberOfSites() <= 0)
   {
     return this->Fail("there are no sites");
   }
   ScopedContext current(this->Context);
   Internals& in = *this->Internal;
-  std::vector<float> texels(static_cast<size_t>(this->SlotSize[0]) * this->SlotSize[1] * 4);
-  ReadTarget(in.SitesFramebuffer[in.CurrentSites], this->Context->GetRenderWindow(), 0,
-    this->SlotSize[0], this->SlotSize[1], GL_RGBA, texels.data());
-  sites.resize(2 * static_cast<size_t>(this->NumberOfSites));
-  for (int i = 0; i < this->NumberOfSites; ++i)
+  std::vector<float> texels;
+  in.Sites.Read(this->Context->GetRenderWindow(), texels);
+  const int n = in.Sites.GetNumberOfSites();
+  sites.resize(2 * static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i)
   {
     sites[2 * i] = this->Grid.Origin[0] + texels[4 * i] * this->Grid.Spacing[0];
     sites[2 * i + 1] = this->Grid.Origin[1] + texels[4 * i + 1] * this->Grid.Spacing[1];
@@ -508,7 +490,7 @@ bool vtkCVTOpenGLEngine::GetSites(std::vector<double>& sites)
 //------------------------------------------------------------------------------
 bool vtkCVTOpenGLEngine::GetLabels(std::vector<int>& labels)
 {
-  if (!this->Internal->HaveSums && this->NumberOfSites <= 0)
+  if (!this->Internal->HaveSums && this->Internal->Sites.GetNumberOfSites() <= 0)
   {
     return this->Fail("there is no labelling yet");
   }
@@ -531,6 +513,6 @@ void vtkCVTOpenGLEngine::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Grid: " << this->Grid.Width << " x " << this->Grid.Height << "\n";
-  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
+  os << indent << "NumberOfSites: " << this->Internal->Sites.GetNumberOfSites() << "\n";
   os << indent << "SplitBoundaryPixels: " << this->SplitBoundaryPixels << "\n";
 }

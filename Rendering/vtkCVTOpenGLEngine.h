@@ -77,8 +77,6 @@ private:
   cvt::Grid Grid;
   int GridSize[2] = { 0, 0 };       // Grid.Width, Grid.Height, as shader uniforms want them
   float Metric[2] = { 1.0f, 1.0f }; // Grid.Spacing in float
-  int NumberOfSites = 0;
-  int SlotSize[2] = { 0, 0 };
   bool SplitBoundaryPixels = true;
 };
 

@@ -3,6 +3,7 @@
 #include "vtkCVTJumpFlooding.h"
 #include "vtkCVTOpenGLContext.h"
 #include "vtkCVTOpenGLHelpers.h"
+#include "vtkCVTSiteSlots.h"
 #include "vtkCVTSlotReduction.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -35,11 +36,11 @@ struct vtkCVTSurfaceEngine::Internals
 {
   vtkNew<vtkTextureObject> Positions; // (x, y, z, valid)
   vtkNew<vtkTextureObject> Weights;
-  vtkNew<vtkTextureObject> Sites;
+  vtkCVTSiteSlots Sites{ 1 };   // (x, y, z, pixel index)
+  vtkCVTSiteSlots Targets{ 1 }; // constrained centroids: where each site should go
   // Per slot: the cell sums, the energy, and the largest pixel distance from the site's pixel.
   vtkCVTSlotReduction Reduction{ { { 4, vtkCVTSlotReduction::Blend::Sum },
     { 1, vtkCVTSlotReduction::Blend::Sum }, { 1, vtkCVTSlotReduction::Blend::Maximum } } };
-  vtkNew<vtkTextureObject> Targets;        // constrained centroids: slot per site
   vtkNew<vtkTextureObject> NearestPoints;  // per pixel: (point, distance)
   vtkNew<vtkTextureObject> NearestCorners; // per pixel: pixel index of that point
   vtkNew<vtkTextureObject> Nearest;        // slot per site: (point, pixel index)
@@ -52,9 +53,9 @@ struct vtkCVTSurfaceEngine::Internals
 
   void Release(vtkOpenGLRenderWindow* window)
   {
-    for (vtkTextureObject* t : { this->Positions.Get(), this->Weights.Get(), this->Sites.Get(),
-           this->Targets.Get(), this->NearestPoints.Get(), this->NearestCorners.Get(),
-           this->Nearest.Get(), this->NearestDepth.Get() })
+    for (vtkTextureObject* t :
+      { this->Positions.Get(), this->Weights.Get(), this->NearestPoints.Get(),
+        this->NearestCorners.Get(), this->Nearest.Get(), this->NearestDepth.Get() })
     {
       t->ReleaseGraphicsResources(window);
     }
@@ -63,6 +64,8 @@ struct vtkCVTSurfaceEngine::Internals
     {
       f->ReleaseGraphicsResources(window);
     }
+    this->Sites.Release(window);
+    this->Targets.Release(window);
     this->Reduction.Release(window);
     this->EmptyVertexArray->ReleaseGraphicsResources();
     if (this->NearestQuad)
@@ -133,7 +136,7 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
   this->GridSize[1] = image.Height;
   this->Wrap[0] = image.WrapU ? 1 : 0;
   this->Wrap[1] = image.WrapV ? 1 : 0;
-  this->NumberOfSites = 0;
+  in.Sites.Forget();
   const size_t pixels = static_cast<size_t>(image.NumberOfPixels());
   std::vector<float> positions(4 * pixels);
   for (size_t p = 0; p < pixels; ++p)
@@ -186,57 +189,60 @@ bool vtkCVTSurfaceEngine::SetSites(
     return this->Fail("the sites need three coordinates and one pixel each");
   }
   const long long total = static_cast<long long>(this->GridSize[0]) * this->GridSize[1];
-  int slotSize[2];
-  if (!LayoutSlots(n, this->Context->GetMaximumTextureSize(), slotSize))
+  for (long long pixel : pixels)
   {
-    return this->Fail("too many sites for this GPU's textures");
-  }
-  const int slotWidth = slotSize[0], slotHeight = slotSize[1];
-  std::vector<float> texels(static_cast<size_t>(slotWidth) * slotHeight * 4, 0.0f);
-  for (int i = 0; i < n; ++i)
-  {
-    if (pixels[i] < 0 || pixels[i] >= total || pixels[i] >= (1LL << 24))
+    if (pixel < 0 || pixel >= total || pixel >= (1LL << 24))
     {
       return this->Fail("a site's pixel lies outside the geometry image");
     }
-    for (int c = 0; c < 3; ++c)
-    {
-      texels[4 * i + c] = static_cast<float>(sites[3 * i + c]);
-    }
-    texels[4 * i + 3] = static_cast<float>(pixels[i]);
   }
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   Internals& in = *this->Internal;
-  if (!AllocateFloatTexture(in.Sites, window, slotWidth, slotHeight, 4, texels.data()))
+  const int before = in.Sites.GetNumberOfSites();
+  const int* laidOut = in.Sites.GetSlotSize();
+  const int previousSlots[2] = { laidOut[0], laidOut[1] };
+  const auto upload = in.Sites.Set(window, n, this->Context->GetMaximumTextureSize(),
+    [&](int i, float* texel)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        texel[c] = static_cast<float>(sites[3 * i + c]);
+      }
+      texel[3] = static_cast<float>(pixels[i]);
+    });
+  if (upload == vtkCVTSiteSlots::Upload::TooManySites)
+  {
+    return this->Fail("too many sites for this GPU's textures");
+  }
+  if (upload != vtkCVTSiteSlots::Upload::Done)
   {
     return this->Fail("the GPU could not allocate the site texture");
   }
+  const int* slotSize = in.Sites.GetSlotSize();
   bool ok = in.Reduction.Allocate(window, slotSize);
   if (ok &&
-    (slotWidth != this->SlotSize[0] || slotHeight != this->SlotSize[1] || !in.Nearest->GetHandle()))
+    (slotSize[0] != previousSlots[0] || slotSize[1] != previousSlots[1] ||
+      !in.Nearest->GetHandle()))
   {
-    ok = AllocateFloatTexture(in.Nearest, window, slotWidth, slotHeight, 4) &&
-      this->AttachNearestTargets(slotWidth, slotHeight);
+    ok = AllocateFloatTexture(in.Nearest, window, slotSize[0], slotSize[1], 4) &&
+      this->AttachNearestTargets(slotSize[0], slotSize[1]);
   }
   if (!ok)
   {
     return this->Fail("the GPU could not allocate the reduction targets");
   }
-  if (n != this->NumberOfSites)
+  if (n != before)
   {
     this->Flooding->ForgetSpacing();
   }
-  this->NumberOfSites = n;
-  this->SlotSize[0] = slotWidth;
-  this->SlotSize[1] = slotHeight;
   return this->CheckGLError("site upload");
 }
 
 //------------------------------------------------------------------------------
 bool vtkCVTSurfaceEngine::ComputeCellSums(cvt::CellSums& sums)
 {
-  if (this->NumberOfSites <= 0)
+  if (this->Internal->Sites.GetNumberOfSites() <= 0)
   {
     return this->Fail("SetSites must succeed before ComputeCellSums");
   }
@@ -269,15 +275,15 @@ bool vtkCVTSurfaceEngine::Label(int initialStep)
   }
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   BindForNearestScatter(this->Flooding->GetFramebuffer(0), window);
-  in.Sites->Activate();
-  seed->SetUniformi("sites", in.Sites->GetTextureUnit());
-  seed->SetUniform2i("slotSize", this->SlotSize);
+  in.Sites.GetCurrent()->Activate();
+  seed->SetUniformi("sites", in.Sites.GetCurrent()->GetTextureUnit());
+  seed->SetUniform2i("slotSize", in.Sites.GetSlotSize());
   seed->SetUniform2i("gridSize", this->GridSize);
-  seed->SetUniformi("numberOfSites", this->NumberOfSites);
+  seed->SetUniformi("numberOfSites", in.Sites.GetNumberOfSites());
   in.EmptyVertexArray->Bind();
-  glDrawArrays(GL_POINTS, 0, this->NumberOfSites);
+  glDrawArrays(GL_POINTS, 0, in.Sites.GetNumberOfSites());
   in.EmptyVertexArray->Release();
-  in.Sites->Deactivate();
+  in.Sites.GetCurrent()->Deactivate();
   state->vtkglDisable(GL_DEPTH_TEST);
 
   // 1+JFA from the seeds in texture 0.
@@ -313,16 +319,16 @@ bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
   seeds->Activate();
   in.Positions->Activate();
   in.Weights->Activate();
-  in.Sites->Activate();
+  in.Sites.GetCurrent()->Activate();
   reduce->SetUniformi("seeds", seeds->GetTextureUnit());
   reduce->SetUniformi("positions", in.Positions->GetTextureUnit());
   reduce->SetUniformi("weights", in.Weights->GetTextureUnit());
-  reduce->SetUniformi("sites", in.Sites->GetTextureUnit());
+  reduce->SetUniformi("sites", in.Sites.GetCurrent()->GetTextureUnit());
   reduce->SetUniform2i("gridSize", this->GridSize);
-  reduce->SetUniform2i("slotSize", this->SlotSize);
+  reduce->SetUniform2i("slotSize", in.Sites.GetSlotSize());
   reduce->SetUniform2i("wrap", this->Wrap);
   in.Reduction.Scatter(window, static_cast<vtkIdType>(this->GridSize[0]) * this->GridSize[1]);
-  in.Sites->Deactivate();
+  in.Sites.GetCurrent()->Deactivate();
   in.Weights->Deactivate();
   in.Positions->Deactivate();
   seeds->Deactivate();
@@ -331,9 +337,10 @@ bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
   in.Reduction.Read(window, 0, texels);
   in.Reduction.Read(window, 1, energy);
   in.Reduction.Read(window, 2, radius);
-  sums.Resize(this->NumberOfSites, true);
+  const int n = in.Sites.GetNumberOfSites();
+  sums.Resize(n, true);
   maximumRadius = 0.0;
-  for (int i = 0; i < this->NumberOfSites; ++i)
+  for (int i = 0; i < n; ++i)
   {
     sums.Mass[i] = texels[4 * i];
     sums.MomentX[i] = texels[4 * i + 1];
@@ -348,7 +355,7 @@ bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
 //------------------------------------------------------------------------------
 bool vtkCVTSurfaceEngine::GetLabels(std::vector<int>& labels)
 {
-  if (this->NumberOfSites <= 0)
+  if (this->Internal->Sites.GetNumberOfSites() <= 0)
   {
     return this->Fail("there is no labelling yet");
   }
@@ -393,7 +400,8 @@ bool vtkCVTSurfaceEngine::AttachNearestTargets(int width, int height)
 bool vtkCVTSurfaceEngine::NearestPointsInCells(
   const std::vector<double>& targets, std::vector<double>& sites, std::vector<long long>& pixels)
 {
-  if (this->NumberOfSites <= 0 || targets.size() != 3 * static_cast<size_t>(this->NumberOfSites) ||
+  const int sitesSet = this->Internal->Sites.GetNumberOfSites();
+  if (sitesSet <= 0 || targets.size() != 3 * static_cast<size_t>(sitesSet) ||
     sites.size() != targets.size() || pixels.size() != targets.size() / 3)
   {
     return this->Fail("NearestPointsInCells needs a labelling and one target per site");
@@ -414,16 +422,16 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
-  std::vector<float> texels(static_cast<size_t>(this->SlotSize[0]) * this->SlotSize[1] * 4, 0.0f);
-  for (int i = 0; i < this->NumberOfSites; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      texels[4 * i + c] = static_cast<float>(targets[3 * i + c]);
-    }
-  }
-  if (!AllocateFloatTexture(
-        in.Targets, window, this->SlotSize[0], this->SlotSize[1], 4, texels.data()))
+  const int n = sitesSet;
+  const int* slotSize = in.Sites.GetSlotSize();
+  if (in.Targets.Set(window, n, this->Context->GetMaximumTextureSize(),
+        [&targets](int i, float* texel)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            texel[c] = static_cast<float>(targets[3 * i + c]);
+          }
+        }) != vtkCVTSiteSlots::Upload::Done)
   {
     return this->Fail("the GPU could not allocate the target texture");
   }
@@ -452,20 +460,20 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   vtkTextureObject* seeds = this->Flooding->GetTexture(in.CurrentSeeds);
   seeds->Activate();
   in.Positions->Activate();
-  in.Targets->Activate();
+  in.Targets.GetCurrent()->Activate();
   nearest->SetUniformi("seeds", seeds->GetTextureUnit());
   nearest->SetUniformi("positions", in.Positions->GetTextureUnit());
-  nearest->SetUniformi("targets", in.Targets->GetTextureUnit());
+  nearest->SetUniformi("targets", in.Targets.GetCurrent()->GetTextureUnit());
   nearest->SetUniform2i("gridSize", this->GridSize);
-  nearest->SetUniform2i("slotSize", this->SlotSize);
+  nearest->SetUniform2i("slotSize", slotSize);
   nearest->SetUniform2i("wrap", this->Wrap);
   in.NearestQuad->Render();
-  in.Targets->Deactivate();
+  in.Targets.GetCurrent()->Deactivate();
   in.Positions->Deactivate();
 
   // Step 2: scatter to the slots, the depth test keeping the nearest point of each cell.
   window->GetShaderCache()->ReadyShaderProgram(scatter);
-  state->vtkglViewport(0, 0, this->SlotSize[0], this->SlotSize[1]);
+  state->vtkglViewport(0, 0, slotSize[0], slotSize[1]);
   BindForNearestScatter(in.NearestFramebuffer, window);
   in.NearestPoints->Activate();
   in.NearestCorners->Activate();
@@ -473,7 +481,7 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   scatter->SetUniformi("nearest", in.NearestPoints->GetTextureUnit());
   scatter->SetUniformi("corners", in.NearestCorners->GetTextureUnit());
   scatter->SetUniform2i("gridSize", this->GridSize);
-  scatter->SetUniform2i("slotSize", this->SlotSize);
+  scatter->SetUniform2i("slotSize", slotSize);
   scatter->SetUniformf("maximumDistance", static_cast<float>(2.0 * this->Diagonal));
   in.EmptyVertexArray->Bind();
   glDrawArrays(GL_POINTS, 0, this->GridSize[0] * this->GridSize[1]);
@@ -483,9 +491,9 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   seeds->Deactivate();
   state->PopFramebufferBindings();
 
-  ReadTarget(
-    in.NearestFramebuffer, window, 0, this->SlotSize[0], this->SlotSize[1], GL_RGBA, texels.data());
-  for (int i = 0; i < this->NumberOfSites; ++i)
+  std::vector<float> texels(static_cast<size_t>(slotSize[0]) * slotSize[1] * 4);
+  ReadTarget(in.NearestFramebuffer, window, 0, slotSize[0], slotSize[1], GL_RGBA, texels.data());
+  for (int i = 0; i < n; ++i)
   {
     if (texels[4 * i + 3] < 0.0f)
     {
@@ -506,5 +514,5 @@ void vtkCVTSurfaceEngine::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "GeometryImage: " << this->GridSize[0] << " x " << this->GridSize[1] << " (wrap "
      << this->Wrap[0] << ", " << this->Wrap[1] << ")\n";
-  os << indent << "NumberOfSites: " << this->NumberOfSites << "\n";
+  os << indent << "NumberOfSites: " << this->Internal->Sites.GetNumberOfSites() << "\n";
 }

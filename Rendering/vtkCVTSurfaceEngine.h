@@ -61,8 +61,6 @@ private:
   int GridSize[2] = { 0, 0 };
   double Diagonal = 1.0; // of the surface's bounding box: the depth scale of nearest points
   int Wrap[2] = { 0, 0 };
-  int SlotSize[2] = { 0, 0 };
-  int NumberOfSites = 0;
 };
 
 #endif
