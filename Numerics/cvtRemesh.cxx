@@ -420,7 +420,7 @@ int RelaxThinTriangles(
       // First the mean of its neighbours (Laplacian smoothing), then, where that is not wide
       // enough, a pattern search in the tangent plane: steps of a quarter, an eighth and a
       // sixteenth of the mean edge in eight directions, each taken while it widens.
-      double mean[3] = { 0.0, 0.0, 0.0 }, normal[3] = { 0.0, 0.0, 0.0 };
+      double mean[3] = { 0.0, 0.0, 0.0 }, normal[3] = { 0.0, 0.0, 0.0 }, edge = 0.0;
       int count = 0;
       for (int t : around[static_cast<size_t>(v)])
       {
@@ -435,6 +435,7 @@ int RelaxThinTriangles(
             {
               mean[k] += point(u)[k];
             }
+            edge += std::sqrt(Distance2(point(u), point(v)));
             ++count;
           }
         }
@@ -443,18 +444,11 @@ int RelaxThinTriangles(
           normal[k] += n[k];
         }
       }
-      double edge = 0.0;
       for (int k = 0; k < 3; ++k)
       {
         mean[k] /= count;
       }
-      for (int t : around[static_cast<size_t>(v)])
-      {
-        for (int u : remesh.Triangles[static_cast<size_t>(t)])
-        {
-          edge += u == v ? 0.0 : std::sqrt(Distance2(point(u), point(v))) / count;
-        }
-      }
+      edge /= count;
       bool changed = tryPlace(v, mean, reach, current);
       double tangent[2][3];
       if (search && current < ThinCorner && TangentBasis(normal, tangent[0], tangent[1]))

@@ -200,8 +200,6 @@ bool vtkCVTSurfaceEngine::SetSites(
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   Internals& in = *this->Internal;
   const int before = in.Sites.GetNumberOfSites();
-  const int* laidOut = in.Sites.GetSlotSize();
-  const int previousSlots[2] = { laidOut[0], laidOut[1] };
   const auto upload = in.Sites.Set(window, n, this->Context->GetMaximumTextureSize(),
     [&](int i, float* texel)
     {
@@ -221,9 +219,10 @@ bool vtkCVTSurfaceEngine::SetSites(
   }
   const int* slotSize = in.Sites.GetSlotSize();
   bool ok = in.Reduction.Allocate(window, slotSize);
+  // The nearest-point slots (and their depth) follow the site slots' layout.
   if (ok &&
-    (slotSize[0] != previousSlots[0] || slotSize[1] != previousSlots[1] ||
-      !in.Nearest->GetHandle()))
+    (!in.Nearest->GetHandle() || in.Nearest->GetWidth() != static_cast<unsigned int>(slotSize[0]) ||
+      in.Nearest->GetHeight() != static_cast<unsigned int>(slotSize[1])))
   {
     ok = AllocateFloatTexture(in.Nearest, window, slotSize[0], slotSize[1], 4) &&
       this->AttachNearestTargets(slotSize[0], slotSize[1]);
