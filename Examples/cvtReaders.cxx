@@ -24,6 +24,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -38,6 +39,9 @@ namespace cvtcli
 namespace
 {
 
+/// The probe child's exit status when the reader reported an error (and wrote it to the pipe).
+constexpr int ReaderReportedAnError = 3;
+
 std::string Extension(const std::string& path)
 {
   const size_t dot = path.find_last_of('.');
@@ -49,24 +53,59 @@ std::string Extension(const std::string& path)
 /// Some of VTK's readers crash or abort on corrupt files (PNG through libpng's error path,
 /// binary legacy VTK and PLY, binary STL with a wrong triangle count). So the file is read once
 /// in a child process first: a signal there, or no end within a minute, becomes a clear error
-/// here instead of a crash or a hang.
+/// here instead of a crash or a hang. A reader that reports an error (a file that is not of its
+/// format: VTK's PNG reader then still gives a 1 x 1 image) fails with the reader's message; the
+/// child's own stderr is dropped, so that libpng's and the readers' texts do not reach the user.
 void ProbeReader(vtkAlgorithm* reader, const std::string& path)
 {
   std::cout.flush();
   std::cerr.flush();
-  const pid_t child = fork();
-  if (child == 0)
-  {
-    alarm(60);
-    reader->Update();
-    std::_Exit(0);
-  }
-  if (child < 0)
+  int message[2];
+  if (pipe(message) != 0)
   {
     return; // no probe possible: read as usual
   }
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    close(message[0]);
+    const int quiet = open("/dev/null", O_WRONLY);
+    if (quiet >= 0)
+    {
+      dup2(quiet, STDERR_FILENO);
+    }
+    alarm(60);
+    vtkNew<ErrorObserver> errors;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->Update();
+    if (errors->Message.empty())
+    {
+      std::_Exit(0);
+    }
+    // A failed write leaves the parent an empty text: it then says only that reading failed.
+    [[maybe_unused]] const ssize_t written =
+      write(message[1], errors->Message.data(), errors->Message.size());
+    std::_Exit(ReaderReportedAnError);
+  }
+  close(message[1]);
+  if (child < 0)
+  {
+    close(message[0]);
+    return; // no probe possible: read as usual
+  }
+  std::string text;
+  char buffer[512];
+  for (ssize_t got; (got = read(message[0], buffer, sizeof(buffer))) > 0;)
+  {
+    text.append(buffer, static_cast<size_t>(got));
+  }
+  close(message[0]);
   int status = 0;
   waitpid(child, &status, 0);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == ReaderReportedAnError)
+  {
+    Fail("cannot read --input '" + path + "': " + (text.empty() ? "the reader failed" : text));
+  }
   // The child ends with _Exit(0) unless the reader kills it (a signal, or an exit status other
   // than 0, as a sanitizer turns a crash into).
   if (WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) != 0))

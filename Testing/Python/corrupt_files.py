@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Corrupt input files through `cvt`: every format it reads (PNG, JPEG, VTI, MHA, VTP, VTK, STL,
 PLY, OBJ, CSV sites), each cut at random lengths, with random bit flips, and as a valid header
-followed by random bytes, plus wrong extensions. Seeded, bounded. Every case must end in a clean
-exit (0 when the damage was harmless, or an error line starting with "cvt:"), never a signal,
-never a hang. Prints the outcome counts.
+followed by random bytes, plus wrong extensions and a few bytes of text under every image and
+mesh extension. Seeded, bounded. Every case must end in a clean exit (0 when the damage was
+harmless, or an error whose every stderr line starts with "cvt:"), never a signal, never a hang;
+the few bytes of text must be refused. Prints the outcome counts.
 Usage: corrupt_files.py PATH/TO/cvt PNG [CASES_PER_FORMAT]"""
 import os
 import random
@@ -66,7 +67,7 @@ def main():
     cvt, png = sys.argv[1], sys.argv[2]
     cases = int(sys.argv[3]) if len(sys.argv) > 3 else 20
     rng = random.Random(2026)
-    counts = {'accepted': 0, 'clean error': 0, 'crash': 0, 'hang': 0}
+    counts = {'accepted': 0, 'clean error': 0, 'noisy error': 0, 'wrongly accepted': 0, 'crash': 0, 'hang': 0}
     bad = []
     with tempfile.TemporaryDirectory() as folder:
         made = sources(folder, png)
@@ -84,6 +85,15 @@ def main():
             with open(name, 'wb') as out:
                 out.write(open(made[right], 'rb').read())
             runs.append((wrong, name))
+        # Not a file of the format at all: refused (VTK's PNG reader reads this as a 1 x 1 image).
+        refuse = set()
+        for ext in made:
+            if ext != 'csv':
+                name = os.path.join(folder, f'text.{ext}')
+                with open(name, 'w') as out:
+                    out.write('garbage')
+                runs.append((ext, name))
+                refuse.add(name)
         for ext, name in runs:
             if ext == 'csv':
                 command = [cvt, 'image', '--resolution', '32', '--initial-sites', name]
@@ -99,10 +109,17 @@ def main():
                 counts['hang'] += 1
                 bad.append(('hang', name))
                 continue
-            if run.returncode == 0:
+            lines = run.stderr.decode(errors='replace').splitlines()
+            if run.returncode == 0 and name not in refuse:
                 counts['accepted'] += 1
-            elif run.returncode > 0 and b'cvt: ' in run.stderr:
+            elif run.returncode == 0:
+                counts['wrongly accepted'] += 1
+                bad.append(('accepted, should be refused', name))
+            elif run.returncode > 0 and lines and all(line.startswith('cvt: ') for line in lines):
                 counts['clean error'] += 1
+            elif run.returncode > 0 and any(line.startswith('cvt: ') for line in lines):
+                counts['noisy error'] += 1
+                bad.append(('lines other than cvt: ...', name, run.stderr[-300:]))
             else:
                 counts['crash'] += 1
                 bad.append((f'exit {run.returncode}', name, run.stderr[-200:]))
