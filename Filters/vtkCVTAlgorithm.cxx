@@ -1,13 +1,18 @@
 #include "vtkCVTAlgorithm.h"
 
+#include "cvtExactEngine.h"
 #include "cvtOptimizer.h"
 #include "vtkCVTOutputHelpers.h"
 
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
+
+#include <vector>
 
 //------------------------------------------------------------------------------
 vtkCVTAlgorithm::vtkCVTAlgorithm()
@@ -71,6 +76,7 @@ int vtkCVTAlgorithm::RequestData(
     this->LastRunFailed,
     [&]
     {
+      this->RanksStopTogether = this->AnyRankAborted = false;
       for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
       {
         vtkDataObject::GetData(outputVector, port)->Initialize();
@@ -91,6 +97,51 @@ cvt::OptimizerOptions vtkCVTAlgorithm::GetOptimizerOptions() const
 }
 
 //------------------------------------------------------------------------------
+int vtkCVTAlgorithm::ShareCellSumsAcrossRanks(
+  cvt::ExactEngine* engine, bool ready, vtkInformationVector* outputVector)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  const bool allRanksRun = ranks > 1 && info->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
+    info->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) == ranks && info->Has(SDDP::UPDATE_PIECE_NUMBER()) &&
+    info->Get(SDDP::UPDATE_PIECE_NUMBER()) == controller->GetLocalProcessId();
+  int canShare = engine && ready ? 1 : 0;
+  if (allRanksRun)
+  {
+    int everyRank = 0;
+    canShare =
+      controller->AllReduce(&canShare, &everyRank, 1, vtkCommunicator::MIN_OP) && everyRank == 1;
+  }
+  if (!allRanksRun || !canShare)
+  {
+    if (engine)
+    {
+      engine->ShareWork(0, 1, nullptr);
+    }
+    return 1;
+  }
+  this->RanksStopTogether = true;
+  engine->ShareWork(controller->GetLocalProcessId(), ranks,
+    [this, controller](std::vector<double>& sums)
+    {
+      sums.push_back(this->GetAbortExecute() ? 1.0 : 0.0); // this rank's stop, summed with the sums
+      std::vector<double> total(sums.size());
+      if (!controller->AllReduce(sums.data(), total.data(), static_cast<vtkIdType>(sums.size()),
+            vtkCommunicator::SUM_OP))
+      {
+        return false;
+      }
+      this->AnyRankAborted = this->AnyRankAborted || total.back() > 0.0;
+      total.pop_back();
+      sums.swap(total);
+      return true;
+    });
+  return ranks;
+}
+
+//------------------------------------------------------------------------------
 bool vtkCVTAlgorithm::Optimize(cvt::Problem& problem, const cvt::SiteState& initial,
   const cvt::OptimizerOptions& options, cvt::OptimizerResult& result, std::string& error,
   double progressShare)
@@ -98,7 +149,7 @@ bool vtkCVTAlgorithm::Optimize(cvt::Problem& problem, const cvt::SiteState& init
   const auto progress = [this, progressShare](double fraction)
   {
     this->UpdateProgress(progressShare * fraction);
-    return !this->GetAbortExecute();
+    return !(this->RanksStopTogether ? this->AnyRankAborted : this->GetAbortExecute());
   };
   const bool optimized = this->Method == LLOYD
     ? cvt::RunLloyd(problem, initial, options, progress, result, error)

@@ -33,6 +33,7 @@ class vtkFieldData;
 class vtkTable;
 namespace cvt
 {
+class ExactEngine;
 class Problem;
 struct OptimizerOptions;
 struct OptimizerResult;
@@ -155,6 +156,20 @@ protected:
   bool Optimize(cvt::Problem& problem, const cvt::SiteState& initial,
     const cvt::OptimizerOptions& options, cvt::OptimizerResult& result, std::string& error,
     double progressShare = 1.0);
+  /**
+   * Under MPI, when the executive asks this rank for its piece of as many pieces as there are
+   * ranks (every rank then runs the same request), makes the ranks share `engine`'s cell sums:
+   * each clips and integrates its share of the cells and the sums are added across ranks
+   * (vtkMultiProcessController::AllReduce) before every optimiser step. Every rank of such a
+   * request must call it, with a null `engine` if it runs another engine and `ready` false if
+   * its engine failed to set up: the ranks share only when all of them can, and otherwise each
+   * computes alone. While they share, they stop together: each reduction carries the ranks'
+   * AbortExecute, and an abort asked on one rank stops all of them at the same step (a rank
+   * that stopped alone would leave the others waiting in the next reduction). A filter updated
+   * on one rank alone (piece 0 of 1) shares nothing. Returns the number of ranks sharing.
+   */
+  int ShareCellSumsAcrossRanks(
+    cvt::ExactEngine* engine, bool ready, vtkInformationVector* outputVector);
   /** The run's field data: Energy, GradientNorm, Iterations, Evaluations, StopReason. */
   static void AddRunFields(
     vtkFieldData* fields, const cvt::OptimizerResult& result, double gradientNorm);
@@ -169,6 +184,8 @@ protected:
   bool FailPipelineOnError = true;
   vtkTimeStamp LastFailure; // when the last failed run ended (see FailPipelineOnError)
   bool LastRunFailed = false;
+  bool RanksStopTogether = false; // see ShareCellSumsAcrossRanks
+  bool AnyRankAborted = false;
 
 private:
   vtkCVTAlgorithm(const vtkCVTAlgorithm&) = delete;

@@ -276,15 +276,15 @@ bool vtkCVTImageFilter::Compute(
   vtkCVTOpenGLEngine* gpu =
     choice.UseOpenGL ? this->GetOpenGLEngine<vtkCVTOpenGLEngine>() : nullptr;
   cvt::Engine* engine = gpu ? static_cast<cvt::Engine*>(gpu) : &cpu;
-  // Under MPI every rank runs the same optimisation; on the CPU they share its integrals (the
-  // OpenGL engine computes all of them on every rank).
-  const int ranks = gpu ? 1 : cvtvtk::ShareCellSumsAcrossRanks(cpu, outputVector);
   if (gpu)
   {
     gpu->SetAdaptiveStep(this->AdaptiveJumpFlooding);
     gpu->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
   }
   const bool ready = engine->SetDomain(grid, density);
+  // Under MPI every rank runs the same optimisation; on the CPU they share its integrals (the
+  // OpenGL engine computes all of them on every rank).
+  const int ranks = this->ShareCellSumsAcrossRanks(gpu ? nullptr : &cpu, ready, outputVector);
   if (gpu)
   {
     this->ContextDescription = gpu->GetContextDescription();

@@ -3,7 +3,6 @@
 #include "cvtSurface.h"
 
 #include "cvtEngine.h"
-#include "cvtExactEngine.h"
 #include "cvtMemory.h"
 #include "cvtQuality.h"
 
@@ -21,7 +20,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
-#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -204,35 +202,6 @@ void KeepCells(vtkPolyData* data, vtkIdType first, vtkIdType last)
   kept->GetFieldData()->ShallowCopy(data->GetFieldData());
   data->ShallowCopy(kept);
 }
-}
-
-int ShareCellSumsAcrossRanks(cvt::ExactEngine& engine, vtkInformationVector* outputs)
-{
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
-  vtkInformation* info = outputs->GetInformationObject(0);
-  const bool allRanksRun = ranks > 1 && info->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
-    info->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) == ranks && info->Has(SDDP::UPDATE_PIECE_NUMBER()) &&
-    info->Get(SDDP::UPDATE_PIECE_NUMBER()) == controller->GetLocalProcessId();
-  if (!allRanksRun)
-  {
-    engine.ShareWork(0, 1, nullptr);
-    return 1;
-  }
-  engine.ShareWork(controller->GetLocalProcessId(), ranks,
-    [controller](std::vector<double>& sums)
-    {
-      std::vector<double> total(sums.size());
-      if (!controller->AllReduce(sums.data(), total.data(), static_cast<vtkIdType>(sums.size()),
-            vtkCommunicator::SUM_OP))
-      {
-        return false;
-      }
-      sums.swap(total);
-      return true;
-    });
-  return ranks;
 }
 
 void KeepRequestedPieces(vtkInformationVector* outputs)

@@ -21,7 +21,6 @@ class vtkPolyData;
 class vtkTable;
 namespace cvt
 {
-class ExactEngine;
 struct CellSums;
 struct GeometryImage;
 struct MeshQuality;
@@ -60,13 +59,6 @@ void RequestAllOfInput(vtkInformation* inputInformation);
 /// MPI, rank r of N asks one port for piece r of N; the others would get the whole outputs and
 /// run the filter again when they are asked in turn).
 void ShareRequestedPiece(vtkInformation* request, vtkInformationVector* outputs);
-
-/// Under MPI, when the executive asks this rank for its piece of as many pieces as there are
-/// ranks (every rank then runs the same request), makes the ranks share `engine`'s cell sums:
-/// each clips and integrates its share of the cells and the sums are added across ranks
-/// (vtkMultiProcessController::AllReduce) before every optimiser step. A filter updated on one
-/// rank alone (piece 0 of 1) shares nothing. Returns the number of ranks sharing the work.
-int ShareCellSumsAcrossRanks(cvt::ExactEngine& engine, vtkInformationVector* outputs);
 
 /// Under MPI (ParaView's pvbatch or pvserver with N ranks) every rank computes the same CVT and
 /// keeps its share of each output, so that every site, triangle and history row appears once
