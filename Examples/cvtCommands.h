@@ -6,6 +6,7 @@
 
 #include "cvtCommandLine.h"
 #include "vtkCVTAlgorithm.h"
+#include "vtkCVTGPUAlgorithm.h"
 
 namespace cvtcli
 {
@@ -30,6 +31,14 @@ inline void SetOptimizer(const Options& options, vtkCVTAlgorithm* filter)
   {
     filter->SetMethodToLBFGS();
   }
+}
+
+/// --engine auto|opengl|cpu on the image and surface filters.
+inline void SetEngine(const Options& options, vtkCVTGPUAlgorithm* filter)
+{
+  filter->SetEngine(options.Engine == "opengl" ? vtkCVTGPUAlgorithm::OPENGL
+      : options.Engine == "cpu"                ? vtkCVTGPUAlgorithm::CPU
+                                               : vtkCVTGPUAlgorithm::AUTO);
 }
 
 } // namespace cvtcli

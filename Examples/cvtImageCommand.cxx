@@ -35,9 +35,7 @@ int RunImage(const Options& options)
   }
   SetOptimizer(options, cvt.Get());
   cvt->SetComputeExactEnergy(options.Report);
-  cvt->SetEngine(options.Engine == "opengl" ? vtkCVTImageFilter::OPENGL
-      : options.Engine == "cpu"             ? vtkCVTImageFilter::CPU
-                                            : vtkCVTImageFilter::AUTO);
+  SetEngine(options, cvt.Get());
   RunOrFail(
     cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTImageFilter*>(f)->GetSitesOutput(); });
 

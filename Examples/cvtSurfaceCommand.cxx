@@ -163,9 +163,7 @@ int RunSurface(const Options& options)
   vtkNew<vtkCVTSurfaceFilter> cvt;
   cvt->SetInputConnection(geometryImage->GetOutputPort());
   SetOptimizer(options, cvt.Get());
-  cvt->SetEngine(options.Engine == "opengl" ? vtkCVTSurfaceFilter::OPENGL
-      : options.Engine == "cpu"             ? vtkCVTSurfaceFilter::CPU
-                                            : vtkCVTSurfaceFilter::AUTO);
+  SetEngine(options, cvt.Get());
   RunOrFail(
     cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTSurfaceFilter*>(f)->GetSitesOutput(); });
 

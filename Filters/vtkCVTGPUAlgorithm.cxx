@@ -2,7 +2,9 @@
 
 #include "vtkCVTEngineChoice.h"
 #include "vtkCVTGPUEngine.h"
+#include "vtkCVTOutputHelpers.h"
 
+#include "vtkInformationVector.h"
 #include "vtkRenderWindow.h"
 
 //------------------------------------------------------------------------------
@@ -34,6 +36,15 @@ void vtkCVTGPUAlgorithm::ReleaseGraphicsResources()
 }
 
 //------------------------------------------------------------------------------
+int vtkCVTGPUAlgorithm::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  cvtvtk::DescribeLabelsLikeInput(
+    inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(LabelsPort));
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkCVTGPUAlgorithm::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -42,9 +53,10 @@ int vtkCVTGPUAlgorithm::RequestData(
 }
 
 //------------------------------------------------------------------------------
-void vtkCVTGPUAlgorithm::UseRenderWindow()
+void vtkCVTGPUAlgorithm::ConfigureOpenGLEngine()
 {
   this->OpenGLEngine->SetRenderWindow(this->RenderWindow);
+  this->OpenGLEngine->SetAdaptiveStep(this->AdaptiveJumpFlooding);
 }
 
 //------------------------------------------------------------------------------
@@ -52,6 +64,7 @@ void vtkCVTGPUAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Engine: " << cvtvtk::EngineKindName(this->Engine) << "\n";
+  os << indent << "AdaptiveJumpFlooding: " << this->AdaptiveJumpFlooding << "\n";
   os << indent << "ContextDescription: "
      << (this->ContextDescription.empty() ? "(none)" : this->ContextDescription) << "\n";
   os << indent << "RenderWindow: " << this->RenderWindow.Get() << "\n";

@@ -48,6 +48,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * On the OpenGL engine, shorten the jump flooding once the sites are spread, with a safeguard
+   * that runs the full flooding again when a cell is larger than the short one reaches (on by
+   * default; see vtkCVTGPUEngine::SetAdaptiveStep).
+   */
+  vtkSetMacro(AdaptiveJumpFlooding, bool);
+  vtkGetMacro(AdaptiveJumpFlooding, bool);
+  vtkBooleanMacro(AdaptiveJumpFlooding, bool);
+  ///@}
+
+  ///@{
   /** The OpenGL engine's context and lifetime (see above). */
   void SetRenderWindow(vtkRenderWindow* window);
   vtkRenderWindow* GetRenderWindow() const;
@@ -61,10 +72,15 @@ protected:
   vtkCVTGPUAlgorithm();
   ~vtkCVTGPUAlgorithm() override;
 
+  /** The input is an image (a density or a geometry image) and the labels output is an image
+   * like it: its whole extent, spacing and origin. */
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  const char* GetLabelsDataType() const override { return "vtkImageData"; }
   /** Forgets the last run's context description, then runs as vtkCVTAlgorithm does. */
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /** The kept OpenGL engine of type EngineType, made on first use, on the RenderWindow. */
+  /** The kept OpenGL engine of type EngineType, made on first use, on the RenderWindow and with
+   * the options above. */
   template<class EngineType>
   EngineType* GetOpenGLEngine()
   {
@@ -72,15 +88,16 @@ protected:
     {
       this->OpenGLEngine = vtkSmartPointer<EngineType>::New();
     }
-    this->UseRenderWindow();
+    this->ConfigureOpenGLEngine();
     return EngineType::SafeDownCast(this->OpenGLEngine);
   }
 
   int Engine = AUTO;
+  bool AdaptiveJumpFlooding = true;
   std::string ContextDescription;
 
 private:
-  void UseRenderWindow();
+  void ConfigureOpenGLEngine();
 
   vtkSmartPointer<vtkRenderWindow> RenderWindow;
   vtkSmartPointer<vtkCVTGPUEngine> OpenGLEngine; // made on first use, kept across updates

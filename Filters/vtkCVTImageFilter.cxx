@@ -241,15 +241,6 @@ int vtkCVTImageFilter::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkCVTImageFilter::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  cvtvtk::DescribeLabelsLikeInput(
-    inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(LabelsPort));
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 bool vtkCVTImageFilter::Compute(
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -278,7 +269,6 @@ bool vtkCVTImageFilter::Compute(
   cvt::Engine* engine = gpu ? static_cast<cvt::Engine*>(gpu) : &cpu;
   if (gpu)
   {
-    gpu->SetAdaptiveStep(this->AdaptiveJumpFlooding);
     gpu->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
   }
   const bool ready = engine->SetDomain(grid, density);
@@ -409,6 +399,5 @@ void vtkCVTImageFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "InvertDensity: " << this->InvertDensity << "\n";
   os << indent << "ComputeExactEnergy: " << this->ComputeExactEnergy << "\n";
-  os << indent << "AdaptiveJumpFlooding: " << this->AdaptiveJumpFlooding << "\n";
   os << indent << "SplitBoundaryPixels: " << this->SplitBoundaryPixels << "\n";
 }

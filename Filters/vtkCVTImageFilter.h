@@ -85,10 +85,7 @@ public:
   ///@}
 
   ///@{
-  /** OpenGL engine options, see vtkCVTOpenGLEngine (both on by default). */
-  vtkSetMacro(AdaptiveJumpFlooding, bool);
-  vtkGetMacro(AdaptiveJumpFlooding, bool);
-  vtkBooleanMacro(AdaptiveJumpFlooding, bool);
+  /** OpenGL engine option, see vtkCVTOpenGLEngine (on by default). */
   vtkSetMacro(SplitBoundaryPixels, bool);
   vtkGetMacro(SplitBoundaryPixels, bool);
   vtkBooleanMacro(SplitBoundaryPixels, bool);
@@ -109,8 +106,6 @@ protected:
   ~vtkCVTImageFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  const char* GetLabelsDataType() const override { return "vtkImageData"; }
   bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   /** The chosen density array's name, or nullptr for a uniform density. */
@@ -124,7 +119,6 @@ protected:
 
   bool ComputeExactEnergy = false;
   bool InvertDensity = false;
-  bool AdaptiveJumpFlooding = true;
   bool SplitBoundaryPixels = true;
 
 private:

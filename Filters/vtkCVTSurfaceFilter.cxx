@@ -106,15 +106,6 @@ int vtkCVTSurfaceFilter::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkCVTSurfaceFilter::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  cvtvtk::DescribeLabelsLikeInput(
-    inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(LabelsPort));
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 bool vtkCVTSurfaceFilter::ReadGeometryImage(
   vtkImageData* input, cvt::GeometryImage& image, std::string& error)
 {

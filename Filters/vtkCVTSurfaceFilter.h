@@ -70,8 +70,6 @@ protected:
   ~vtkCVTSurfaceFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  const char* GetLabelsDataType() const override { return "vtkImageData"; }
   bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   /** The OpenGL engine's run: the geometry image on the GPU. */

@@ -91,6 +91,17 @@ def main(plugin, data_dir, output_dir):
     surface = CVTSurface(Input=torus)
     check(list(torus.Resolution) == [1024, 512] and surface.NumberOfSites == 1000,
           "surface defaults: 1024 x 512, 1000 sites")
+    # Both filters with an OpenGL engine inherit its properties (abstract CVTGPUAlgorithm), and
+    # they reach the filter.
+    for proxy in (surface, CVTImage(Input=torus)):
+        names = proxy.ListProperties()
+        check("Engine" in names and "AdaptiveJumpFlooding" in names,
+              "%s has Engine and AdaptiveJumpFlooding" % proxy.GetXMLName())
+        proxy.AdaptiveJumpFlooding = 0
+        proxy.UpdateVTKObjects()
+        check("AdaptiveJumpFlooding: 0" in str(proxy.GetClientSideObject()),  # its PrintSelf
+              "%s: AdaptiveJumpFlooding reaches the filter" % proxy.GetXMLName())
+        proxy.AdaptiveJumpFlooding = 1
     surface.UpdatePipeline()
     remesh = servermanager.Fetch(surface, idx=2)
     edges = set()
