@@ -52,6 +52,18 @@ void AddFieldString(vtkFieldData* fields, const char* name, const std::string& v
   fields->AddArray(array);
 }
 
+vtkSmartPointer<vtkCellArray> TriangleCells(const std::vector<std::array<int, 3>>& triangles)
+{
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->AllocateExact(static_cast<vtkIdType>(triangles.size()), 3 * triangles.size());
+  for (const auto& t : triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    cells->InsertNextCell(3, ids);
+  }
+  return cells;
+}
+
 vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<double>& sites,
   int dimensions, double z, const cvt::CellSums& sums)
 {

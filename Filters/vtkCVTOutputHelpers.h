@@ -4,6 +4,7 @@
 
 #include "cvtOptimizer.h" // for HistoryEntry
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@ class vtkAlgorithm;
 class vtkFieldData;
 class vtkImageData;
 class vtkInformation;
+class vtkCellArray;
 class vtkInformationVector;
 class vtkPoints;
 class vtkPolyData;
@@ -39,6 +41,9 @@ void AddFieldString(vtkFieldData* fields, const char* name, const std::string& v
 /// point arrays SiteId, Mass, Energy. Returns the points, for the dual or remesh to share.
 vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<double>& sites,
   int dimensions, double z, const cvt::CellSums& sums);
+
+/// Triangles (vertex ids) as the cells of a vtkPolyData's polys.
+vtkSmartPointer<vtkCellArray> TriangleCells(const std::vector<std::array<int, 3>>& triangles);
 
 /// An int array named SiteId with these values (labels per pixel or point, sites per vertex).
 vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values);

@@ -166,14 +166,8 @@ void FillLabels(vtkPolyData* output, vtkPolyData* source, const cvt::SurfaceMesh
     points->SetPoint(p, mesh.Point(p));
     pd->CopyData(source->GetPointData(), mesh.SourceIds[p], p);
   }
-  vtkNew<vtkCellArray> polys;
-  for (const auto& t : mesh.Triangles)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    polys->InsertNextCell(3, ids);
-  }
   output->SetPoints(points);
-  output->SetPolys(polys);
+  output->SetPolys(cvtvtk::TriangleCells(mesh.Triangles));
   pd->AddArray(cvtvtk::SiteIdArray(labels));
 }
 
@@ -184,6 +178,143 @@ void AddTopology(vtkFieldData* fields, const char* prefix, const cvt::MeshTopolo
   cvtvtk::AddFieldValue(fields, (p + "Genus").c_str(), topology.Genus);
   cvtvtk::AddFieldValue(fields, (p + "BoundaryLoops").c_str(), topology.BoundaryLoops);
   cvtvtk::AddFieldValue(fields, (p + "EulerCharacteristic").c_str(), topology.EulerCharacteristic);
+}
+
+/// The input as a repaired triangle mesh (`triangles`, its VTK form with the input's point
+/// data; `mesh`, the core's, with the density from the point array `density` unless null).
+/// False with `error` when it cannot be remeshed; `repairs` says what was repaired, if anything.
+bool ReadInputMesh(vtkPolyData* input, const char* density, vtkSmartPointer<vtkPolyData>& triangles,
+  cvt::SurfaceMesh& mesh, std::string& repairs, std::string& error)
+{
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    error = "The input mesh is empty; give a surface made of triangles or polygons.";
+    return false;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    error = "The input has no polygons (only points or lines); give a surface mesh.";
+    return false;
+  }
+  // Corrupt files can name points that do not exist; VTK's cleaning would crash on them, in
+  // any of the four cell arrays (it marks the points every cell uses).
+  for (vtkCellArray* cells :
+    { input->GetVerts(), input->GetLines(), input->GetPolys(), input->GetStrips() })
+  {
+    vtkDataArray* ids = cells ? cells->GetConnectivityArray() : nullptr;
+    if (!cells || cells->GetNumberOfCells() == 0)
+    {
+      continue;
+    }
+    double range[2];
+    ids->GetRange(range, 0);
+    if (!cells->IsValid() || range[0] < 0 || range[1] >= input->GetNumberOfPoints())
+    {
+      error = "The input's cells are corrupt: they name points outside 0.." +
+        std::to_string(input->GetNumberOfPoints() - 1) + " (a damaged file?).";
+      return false;
+    }
+  }
+  triangles = Triangulate(input);
+  mesh.Points.resize(3 * static_cast<size_t>(triangles->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < triangles->GetNumberOfPoints(); ++p)
+  {
+    triangles->GetPoint(p, &mesh.Points[3 * p]);
+  }
+  vtkCellArray* polys = triangles->GetPolys();
+  vtkNew<vtkIdList> ids;
+  mesh.Triangles.reserve(static_cast<size_t>(polys->GetNumberOfCells()));
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+  {
+    if (ids->GetNumberOfIds() == 3)
+    {
+      mesh.Triangles.push_back({ static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
+        static_cast<int>(ids->GetId(2)) });
+    }
+  }
+  if (density)
+  {
+    vtkDataArray* values = triangles->GetPointData()->GetArray(density);
+    if (!values || values->GetNumberOfComponents() != 1)
+    {
+      error = std::string("The input has no one-component point array '") + density +
+        "' to use as density; name a point array or leave it empty.";
+      return false;
+    }
+    mesh.Density.resize(static_cast<size_t>(values->GetNumberOfTuples()));
+    for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
+    {
+      mesh.Density[p] = values->GetTuple1(p);
+    }
+  }
+  std::string problem = cvt::CheckSurfaceMesh(mesh);
+  cvt::MeshRepairReport report;
+  if (problem.empty())
+  {
+    problem = cvt::RepairSurfaceMesh(mesh, report);
+  }
+  if (!problem.empty())
+  {
+    error = "Cannot remesh this input: " + problem + ".";
+    return false;
+  }
+  // What cleaning did before the core's repairs: merged points, dropped degenerate cells.
+  const vtkIdType mergedPoints = input->GetNumberOfPoints() - triangles->GetNumberOfPoints();
+  repairs = report.Summary();
+  if (mergedPoints > 0)
+  {
+    repairs = "merged coincident points: " + std::to_string(mergedPoints) +
+      (repairs.empty() ? "" : ", ") + repairs;
+  }
+  return true;
+}
+
+/// The remesh output: the remesh's vertices with the input's point data interpolated at their
+/// surface points (from `source`, the labels output), its triangles, quality and repairs, and
+/// both topologies as field data.
+void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::SurfaceMesh& mesh,
+  vtkPointData* source, const cvt::MeshTopology& topology, const cvt::MeshTopology& input)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(remesh.SiteIds.size()));
+  vtkPointData* pd = output->GetPointData();
+  // The input's normals would not fit the remesh (not unit length once interpolated, and
+  // reversed where the repairs reoriented the input): vtkPolyDataNormals makes the remesh's own.
+  pd->CopyNormalsOff();
+  pd->InterpolateAllocate(source, static_cast<vtkIdType>(remesh.SiteIds.size()));
+  for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
+  {
+    points->SetPoint(static_cast<vtkIdType>(v), &remesh.Points[3 * v]);
+    const int t = std::max(0, remesh.SourceTriangles[v]);
+    vtkNew<vtkIdList> corners;
+    for (int k = 0; k < 3; ++k)
+    {
+      corners->InsertNextId(mesh.Triangles[t][k]);
+    }
+    double weights[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      weights[k] = std::min(1.0, std::max(0.0, remesh.SourceBarycentric[3 * v + k]));
+    }
+    pd->InterpolatePoint(source, static_cast<vtkIdType>(v), corners, weights);
+  }
+  pd->RemoveArray("SiteId");
+  pd->AddArray(cvtvtk::SiteIdArray(remesh.SiteIds));
+  output->SetPoints(points);
+  output->SetPolys(cvtvtk::TriangleCells(remesh.Triangles));
+  vtkFieldData* fields = output->GetFieldData();
+  cvtvtk::AddMeshQuality(fields, cvt::MeasureMesh(remesh.Points, remesh.Triangles));
+  cvtvtk::AddFieldValue(fields, "RemovedTriangles", remesh.RemovedTriangles);
+  cvtvtk::AddFieldValue(fields, "FilledHoles", remesh.FilledHoles);
+  cvtvtk::AddFieldValue(fields, "SplitVertices", remesh.SplitVertices);
+  cvtvtk::AddFieldValue(fields, "FlippedEdges", remesh.FlippedEdges);
+  cvtvtk::AddFieldValue(fields, "ValenceFlips", remesh.ValenceFlips);
+  cvtvtk::AddFieldValue(fields, "MovedVertices", remesh.MovedVertices);
+  cvtvtk::AddFieldValue(fields, "CollapsedEdges", remesh.CollapsedEdges);
+  cvtvtk::AddFieldValue(fields, "SeparatedVertices", remesh.SeparatedVertices);
+  AddTopology(fields, "", topology);
+  AddTopology(fields, "Input", input);
 }
 }
 
@@ -224,92 +355,19 @@ bool vtkCVTRemeshFilter::Compute(
   Clock::time_point stage = Clock::now();
 
   // --- The input as a repaired triangle mesh.
-  if (!input || input->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro("The input mesh is empty; give a surface made of triangles or polygons.");
-    return false;
-  }
-  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
-  {
-    vtkErrorMacro("The input has no polygons (only points or lines); give a surface mesh.");
-    return false;
-  }
-  // Corrupt files can name points that do not exist; VTK's cleaning would crash on them, in
-  // any of the four cell arrays (it marks the points every cell uses).
-  for (vtkCellArray* cells :
-    { input->GetVerts(), input->GetLines(), input->GetPolys(), input->GetStrips() })
-  {
-    vtkDataArray* ids = cells ? cells->GetConnectivityArray() : nullptr;
-    if (!cells || cells->GetNumberOfCells() == 0)
-    {
-      continue;
-    }
-    double range[2];
-    ids->GetRange(range, 0);
-    if (!cells->IsValid() || range[0] < 0 || range[1] >= input->GetNumberOfPoints())
-    {
-      vtkErrorMacro("The input's cells are corrupt: they name points outside 0.."
-        << input->GetNumberOfPoints() - 1 << " (a damaged file?).");
-      return false;
-    }
-  }
-  vtkSmartPointer<vtkPolyData> triangles = Triangulate(input);
+  vtkSmartPointer<vtkPolyData> triangles;
   cvt::SurfaceMesh mesh;
-  mesh.Points.resize(3 * static_cast<size_t>(triangles->GetNumberOfPoints()));
-  for (vtkIdType p = 0; p < triangles->GetNumberOfPoints(); ++p)
+  std::string error, repairs;
+  const bool uniform = this->DensityArray.empty() || this->DensityArray == UniformDensityName();
+  if (!ReadInputMesh(
+        input, uniform ? nullptr : this->DensityArray.c_str(), triangles, mesh, repairs, error))
   {
-    triangles->GetPoint(p, &mesh.Points[3 * p]);
-  }
-  {
-    vtkCellArray* polys = triangles->GetPolys();
-    vtkNew<vtkIdList> ids;
-    mesh.Triangles.reserve(static_cast<size_t>(polys->GetNumberOfCells()));
-    for (polys->InitTraversal(); polys->GetNextCell(ids);)
-    {
-      if (ids->GetNumberOfIds() == 3)
-      {
-        mesh.Triangles.push_back({ static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
-          static_cast<int>(ids->GetId(2)) });
-      }
-    }
-  }
-  if (!this->DensityArray.empty() && this->DensityArray != UniformDensityName())
-  {
-    vtkDataArray* density = triangles->GetPointData()->GetArray(this->DensityArray.c_str());
-    if (!density || density->GetNumberOfComponents() != 1)
-    {
-      vtkErrorMacro("The input has no one-component point array '"
-        << this->DensityArray << "' to use as density; name a point array or leave it empty.");
-      return false;
-    }
-    mesh.Density.resize(static_cast<size_t>(density->GetNumberOfTuples()));
-    for (vtkIdType p = 0; p < density->GetNumberOfTuples(); ++p)
-    {
-      mesh.Density[p] = density->GetTuple1(p);
-    }
-  }
-  std::string problem = cvt::CheckSurfaceMesh(mesh);
-  cvt::MeshRepairReport repairs;
-  if (problem.empty())
-  {
-    problem = cvt::RepairSurfaceMesh(mesh, repairs);
-  }
-  if (!problem.empty())
-  {
-    vtkErrorMacro("Cannot remesh this input: " << problem << ".");
+    vtkErrorMacro(<< error);
     return false;
   }
-  // What cleaning did before the core's repairs: merged points, dropped degenerate cells.
-  const vtkIdType mergedPoints = input->GetNumberOfPoints() - triangles->GetNumberOfPoints();
-  if (repairs.Changed() || mergedPoints > 0)
+  if (!repairs.empty())
   {
-    std::string summary = repairs.Summary();
-    if (mergedPoints > 0)
-    {
-      summary = "merged coincident points: " + std::to_string(mergedPoints) +
-        (summary.empty() ? "" : ", ") + summary;
-    }
-    vtkWarningMacro("The input mesh was repaired: " << summary << ".");
+    vtkWarningMacro("The input mesh was repaired: " << repairs << ".");
   }
   if (this->NumberOfSites < 3)
   {
@@ -326,7 +384,6 @@ bool vtkCVTRemeshFilter::Compute(
   cvt::OptimizerOptions options = this->GetOptimizerOptions();
   options.LloydWarmUpIterations = std::min(5, this->MaximumNumberOfIterations);
   cvt::OptimizerResult result;
-  std::string error;
   const bool meshSet = engine.SetMesh(mesh);
   const double prepareSeconds = since(stage);
   stage = Clock::now();
@@ -382,54 +439,7 @@ bool vtkCVTRemeshFilter::Compute(
   AddTopology(fields, "Input", inputTopology);
   cvtvtk::AddFieldValue(fields, "AddedSites", best.AddedSites);
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(remesh.SiteIds.size()));
-  vtkPointData* remeshPD = remeshOut->GetPointData();
-  vtkPointData* sourcePD = labelsOut->GetPointData();
-  // The input's normals would not fit the remesh (not unit length once interpolated, and
-  // reversed where the repairs reoriented the input): vtkPolyDataNormals makes the remesh's own.
-  remeshPD->CopyNormalsOff();
-  remeshPD->InterpolateAllocate(sourcePD, static_cast<vtkIdType>(remesh.SiteIds.size()));
-  for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
-  {
-    points->SetPoint(static_cast<vtkIdType>(v), &remesh.Points[3 * v]);
-    const int t = std::max(0, remesh.SourceTriangles[v]);
-    vtkNew<vtkIdList> corners;
-    for (int k = 0; k < 3; ++k)
-    {
-      corners->InsertNextId(mesh.Triangles[t][k]);
-    }
-    double weights[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      weights[k] = std::min(1.0, std::max(0.0, remesh.SourceBarycentric[3 * v + k]));
-    }
-    remeshPD->InterpolatePoint(sourcePD, static_cast<vtkIdType>(v), corners, weights);
-  }
-  remeshPD->RemoveArray("SiteId");
-  remeshPD->AddArray(cvtvtk::SiteIdArray(remesh.SiteIds));
-  vtkNew<vtkCellArray> polys;
-  for (const auto& t : remesh.Triangles)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    polys->InsertNextCell(3, ids);
-  }
-  remeshOut->SetPoints(points);
-  remeshOut->SetPolys(polys);
-  const cvt::MeshQuality quality = cvt::MeasureMesh(remesh.Points, remesh.Triangles);
-  vtkFieldData* remeshFields = remeshOut->GetFieldData();
-  cvtvtk::AddMeshQuality(remeshFields, quality);
-  cvtvtk::AddFieldValue(remeshFields, "RemovedTriangles", remesh.RemovedTriangles);
-  cvtvtk::AddFieldValue(remeshFields, "FilledHoles", remesh.FilledHoles);
-  cvtvtk::AddFieldValue(remeshFields, "SplitVertices", remesh.SplitVertices);
-  cvtvtk::AddFieldValue(remeshFields, "FlippedEdges", remesh.FlippedEdges);
-  cvtvtk::AddFieldValue(remeshFields, "ValenceFlips", remesh.ValenceFlips);
-  cvtvtk::AddFieldValue(remeshFields, "MovedVertices", remesh.MovedVertices);
-  cvtvtk::AddFieldValue(remeshFields, "CollapsedEdges", remesh.CollapsedEdges);
-  cvtvtk::AddFieldValue(remeshFields, "SeparatedVertices", remesh.SeparatedVertices);
-  AddTopology(remeshFields, "", remeshTopology);
-  AddTopology(remeshFields, "Input", inputTopology);
+  FillRemesh(remeshOut, remesh, mesh, labelsOut->GetPointData(), remeshTopology, inputTopology);
   if (best.Mismatch != 0)
   {
     vtkWarningMacro("The remesh's topology differs from the input's ("

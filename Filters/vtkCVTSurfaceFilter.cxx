@@ -10,7 +10,6 @@
 #include "vtkCVTSurfaceEngine.h"
 
 #include "vtkCallbackCommand.h"
-#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -245,15 +244,9 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
   labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(labels));
 
   const std::vector<std::array<int, 3>> dual = cvt::DualTriangles(image, labels, result.Sites);
-  vtkNew<vtkCellArray> triangles;
-  for (const auto& t : dual)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    triangles->InsertNextCell(3, ids);
-  }
   vtkPolyData* remeshOut = vtkPolyData::GetData(outputVector, RemeshPort);
   remeshOut->SetPoints(points);
-  remeshOut->SetPolys(triangles);
+  remeshOut->SetPolys(cvtvtk::TriangleCells(dual));
   cvtvtk::AddMeshQuality(remeshOut->GetFieldData(), cvt::MeasureMesh(result.Sites, dual));
   vtkNew<vtkIntArray> remeshIds;
   remeshIds->DeepCopy(sitesOut->GetPointData()->GetArray("SiteId"));
@@ -281,15 +274,9 @@ bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage
   {
     points->SetPoint(p, &coordinates[3 * p]);
   }
-  vtkNew<vtkCellArray> polys;
-  for (const auto& t : triangles)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    polys->InsertNextCell(3, ids);
-  }
   vtkNew<vtkPolyData> mesh;
   mesh->SetPoints(points);
-  mesh->SetPolys(polys);
+  mesh->SetPolys(cvtvtk::TriangleCells(triangles));
 
   vtkNew<vtkCVTRemeshFilter> remesher;
   remesher->SetInputData(mesh);
