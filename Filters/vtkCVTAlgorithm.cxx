@@ -1,6 +1,6 @@
 #include "vtkCVTAlgorithm.h"
 
-#include "cvtExactEngine.h"
+#include "cvtEngine.h"
 #include "cvtOptimizer.h"
 #include "vtkCVTOutputHelpers.h"
 
@@ -97,8 +97,14 @@ cvt::OptimizerOptions vtkCVTAlgorithm::GetOptimizerOptions() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkCVTAlgorithm::StopRequested() const
+{
+  return this->RanksStopTogether ? this->AnyRankAborted : this->AbortExecute != 0;
+}
+
+//------------------------------------------------------------------------------
 int vtkCVTAlgorithm::ShareCellSumsAcrossRanks(
-  cvt::ExactEngine* engine, bool ready, vtkInformationVector* outputVector)
+  cvt::SharedCellSums* engine, bool ready, vtkInformationVector* outputVector)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
@@ -149,7 +155,7 @@ bool vtkCVTAlgorithm::Optimize(cvt::Problem& problem, const cvt::SiteState& init
   const auto progress = [this, progressShare](double fraction)
   {
     this->UpdateProgress(progressShare * fraction);
-    return !(this->RanksStopTogether ? this->AnyRankAborted : this->GetAbortExecute());
+    return !this->StopRequested();
   };
   const bool optimized = this->Method == LLOYD
     ? cvt::RunLloyd(problem, initial, options, progress, result, error)

@@ -33,8 +33,8 @@ class vtkFieldData;
 class vtkTable;
 namespace cvt
 {
-class ExactEngine;
 class Problem;
+class SharedCellSums;
 struct OptimizerOptions;
 struct OptimizerResult;
 struct SiteState;
@@ -159,7 +159,7 @@ protected:
   /**
    * Under MPI, when the executive asks this rank for its piece of as many pieces as there are
    * ranks (every rank then runs the same request), makes the ranks share `engine`'s cell sums:
-   * each clips and integrates its share of the cells and the sums are added across ranks
+   * each computes its share of the work and the sums are added across ranks
    * (vtkMultiProcessController::AllReduce) before every optimiser step. Every rank of such a
    * request must call it, with a null `engine` if it runs another engine and `ready` false if
    * its engine failed to set up: the ranks share only when all of them can, and otherwise each
@@ -169,7 +169,9 @@ protected:
    * on one rank alone (piece 0 of 1) shares nothing. Returns the number of ranks sharing.
    */
   int ShareCellSumsAcrossRanks(
-    cvt::ExactEngine* engine, bool ready, vtkInformationVector* outputVector);
+    cvt::SharedCellSums* engine, bool ready, vtkInformationVector* outputVector);
+  /** Whether to stop: AbortExecute, or while ranks share the sums, an abort on any rank. */
+  bool StopRequested() const;
   /** The run's field data: Energy, GradientNorm, Iterations, Evaluations, StopReason. */
   static void AddRunFields(
     vtkFieldData* fields, const cvt::OptimizerResult& result, double gradientNorm);

@@ -385,6 +385,8 @@ bool vtkCVTRemeshFilter::Compute(
   options.LloydWarmUpIterations = std::min(5, this->MaximumNumberOfIterations);
   cvt::OptimizerResult result;
   const bool meshSet = engine.SetMesh(mesh);
+  // Under MPI the ranks share the clipping of the triangles for the cell sums.
+  const int ranks = this->ShareCellSumsAcrossRanks(&engine, meshSet, outputVector);
   const double prepareSeconds = since(stage);
   stage = Clock::now();
   cvt::RestrictedProblem restricted(engine);
@@ -414,8 +416,8 @@ bool vtkCVTRemeshFilter::Compute(
   // The remesh kept is the first whose topology is the input's, else the closest one.
   TopologyRefinement best;
   if (!RefineForTopology(
-        engine, mesh, inputTopology, result.Sites,
-        [this]() { return this->GetAbortExecute() != 0; }, best, error))
+        engine, mesh, inputTopology, result.Sites, [this]() { return this->StopRequested(); }, best,
+        error))
   {
     vtkErrorMacro("The remesh failed: " << error << ".");
     return false;
@@ -438,6 +440,7 @@ bool vtkCVTRemeshFilter::Compute(
       vtkSMPTools::GetBackend() + ")");
   AddTopology(fields, "Input", inputTopology);
   cvtvtk::AddFieldValue(fields, "AddedSites", best.AddedSites);
+  cvtvtk::AddFieldValue(fields, "EngineRanks", ranks); // ranks sharing the cell sums
 
   FillRemesh(remeshOut, remesh, mesh, labelsOut->GetPointData(), remeshTopology, inputTopology);
   if (best.Mismatch != 0)

@@ -5,7 +5,10 @@
 
 #include "cvtNumericsModule.h" // for export macro
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -98,6 +101,58 @@ protected:
     return false;
   }
   std::string LastError;
+};
+
+/// Cell sums shared between processes that run the same job (MPI ranks): each computes its part
+/// of the work, then the parts' sums are added so that every part goes on with the whole sums.
+/// Every part must compute the same sequence of sums (the exchange is collective).
+class CVTNUMERICS_EXPORT SharedCellSums
+{
+public:
+  /// This process computes part `part` of `parts`; `sumAcrossParts` adds all parts' packed sums
+  /// in place (every array of CellSums one after the other; false if that failed). One part
+  /// (the default) shares nothing.
+  void ShareWork(int part, int parts, std::function<bool(std::vector<double>&)> sumAcrossParts)
+  {
+    const bool valid = parts > 1 && part >= 0 && part < parts && sumAcrossParts;
+    this->Part = valid ? part : 0;
+    this->Parts = valid ? parts : 1;
+    this->Exchange = valid ? std::move(sumAcrossParts) : nullptr;
+  }
+
+protected:
+  /// Adds `sums` across the parts (nothing with one part); false if the exchange failed.
+  bool SumAcrossParts(CellSums& sums) const
+  {
+    if (this->Parts <= 1)
+    {
+      return true;
+    }
+    std::vector<double>* arrays[] = { &sums.Mass, &sums.MomentX, &sums.MomentY, &sums.MomentZ,
+      &sums.Energy };
+    std::vector<double> packed;
+    for (const auto* array : arrays)
+    {
+      packed.insert(packed.end(), array->begin(), array->end());
+    }
+    const size_t size = packed.size();
+    if (!this->Exchange(packed) || packed.size() != size)
+    {
+      return false;
+    }
+    auto next = packed.begin();
+    for (auto* array : arrays)
+    {
+      std::copy(next, next + static_cast<std::ptrdiff_t>(array->size()), array->begin());
+      next += static_cast<std::ptrdiff_t>(array->size());
+    }
+    return true;
+  }
+
+  int Part = 0, Parts = 1;
+
+private:
+  std::function<bool(std::vector<double>&)> Exchange;
 };
 
 /// What an engine must do for the optimisers. Sites are flat (x0, y0, x1, y1, ...) physical

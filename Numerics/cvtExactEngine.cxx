@@ -65,24 +65,9 @@ bool ExactEngine::ComputeCellSums(CellSums& sums)
   const size_t part = static_cast<size_t>(this->Part), parts = static_cast<size_t>(this->Parts);
   this->LastSums = ExactCellSums(this->Domain, this->Sites, this->Density, this->Tables,
     n * part / parts, n * (part + 1) / parts);
-  if (parts > 1)
+  if (!this->SumAcrossParts(this->LastSums))
   {
-    std::vector<double>* arrays[4] = { &this->LastSums.Mass, &this->LastSums.MomentX,
-      &this->LastSums.MomentY, &this->LastSums.Energy };
-    std::vector<double> packed;
-    packed.reserve(4 * n);
-    for (const auto* array : arrays)
-    {
-      packed.insert(packed.end(), array->begin(), array->end());
-    }
-    if (!this->SumAcrossParts(packed) || packed.size() != 4 * n)
-    {
-      return this->Fail("the cell sums of the other processes sharing the work did not arrive");
-    }
-    for (size_t k = 0; k < 4; ++k)
-    {
-      std::copy(packed.begin() + k * n, packed.begin() + (k + 1) * n, arrays[k]->begin());
-    }
+    return this->Fail("the cell sums of the other processes sharing the work did not arrive");
   }
   this->HaveSums = true;
   sums = this->LastSums;
@@ -105,16 +90,6 @@ bool ExactEngine::MoveSitesToCentroids()
   }
   this->HaveSums = false;
   return true;
-}
-
-void ExactEngine::ShareWork(
-  int part, int parts, std::function<bool(std::vector<double>&)> sumAcrossParts)
-{
-  const bool valid = parts > 1 && part >= 0 && part < parts && sumAcrossParts;
-  this->Part = valid ? part : 0;
-  this->Parts = valid ? parts : 1;
-  this->SumAcrossParts = valid ? std::move(sumAcrossParts) : nullptr;
-  this->HaveSums = false;
 }
 
 bool ExactEngine::GetSites(std::vector<double>& sites)

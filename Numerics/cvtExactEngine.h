@@ -9,12 +9,15 @@
 #include "cvtExactVoronoi.h"   // for DensityTables
 #include "cvtNumericsModule.h" // for export macro
 
-#include <functional> // for std::function
-
 namespace cvt
 {
 
-class CVTNUMERICS_EXPORT ExactEngine : public Engine
+/// Under MPI (ShareWork) each part clips and integrates only the cells of its share of the
+/// sites (part `part` of `parts` equal runs of site ids): each cell is integrated by one part
+/// only, so the summed sums are, to the bit, those of one process alone.
+class CVTNUMERICS_EXPORT ExactEngine
+  : public Engine
+  , public SharedCellSums
 {
 public:
   ExactEngine();
@@ -26,14 +29,6 @@ public:
   bool GetSites(std::vector<double>& sites) override;
   bool GetLabels(std::vector<int>& labels) override;
 
-  /// Shares ComputeCellSums between `parts` processes running the same job (MPI ranks): this
-  /// one clips and integrates only the cells of its share of the sites (part `part` of `parts`
-  /// equal runs of site ids), then `sumAcrossParts` adds all parts' sums in place (Mass, MomentX,
-  /// MomentY and Energy one after the other; false if that failed), so that every part goes on
-  /// with the whole sums. Each cell is integrated by one part only: the sums are, to the bit,
-  /// those of one process alone. One part (the default) shares nothing.
-  void ShareWork(int part, int parts, std::function<bool(std::vector<double>&)> sumAcrossParts);
-
 private:
   Grid Domain;
   std::vector<float> Density; // empty: uniform
@@ -41,8 +36,6 @@ private:
   std::vector<double> Sites;
   CellSums LastSums;
   bool HaveSums = false;
-  int Part = 0, Parts = 1;
-  std::function<bool(std::vector<double>&)> SumAcrossParts;
 };
 
 } // namespace cvt

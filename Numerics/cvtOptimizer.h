@@ -6,8 +6,8 @@
 #ifndef cvtOptimizer_h
 #define cvtOptimizer_h
 
+#include "cvtEngine.h"         // for CellSums, EngineErrors
 #include "cvtNumericsModule.h" // for export macro
-#include "cvtEngine.h"     // for CellSums, EngineErrors
 
 #include <functional>
 #include <string>

@@ -5,8 +5,8 @@
 #ifndef cvtProblems_h
 #define cvtProblems_h
 
-#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
+#include "cvtNumericsModule.h" // for export macro
 #include "cvtOptimizer.h"
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSurface.h"

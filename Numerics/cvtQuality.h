@@ -2,8 +2,8 @@
 #ifndef cvtQuality_h
 #define cvtQuality_h
 
-#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
+#include "cvtNumericsModule.h" // for export macro
 
 #include <array>
 #include <vector>
@@ -23,7 +23,8 @@ struct QualityMeasures
   double AreaStandardDeviation = 0.0;
 };
 
-CVTNUMERICS_EXPORT QualityMeasures MeasureQuality(const Grid& grid, const std::vector<double>& sites);
+CVTNUMERICS_EXPORT QualityMeasures MeasureQuality(
+  const Grid& grid, const std::vector<double>& sites);
 
 /// Quality of a triangle mesh (a remesh): vertex valences and triangle angles.
 struct MeshQuality

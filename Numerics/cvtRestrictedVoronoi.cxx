@@ -101,7 +101,8 @@ struct RestrictedVoronoi::Internals
   std::vector<std::vector<SiteContact>> BlockContacts;
 
   void LabelPoints();
-  void Sweep(bool dual);
+  /// Clips the triangles of blocks [firstBlock, lastBlock) (all of them for the dual).
+  void Sweep(bool dual, int firstBlock, int lastBlock);
   /// Per thread: more neighbours when the stored ones do not suffice, and the cells queued for
   /// one triangle (a large triangle, as in CAD models, can meet thousands of cells).
   struct Scratch
@@ -737,12 +738,12 @@ void RestrictedVoronoi::Internals::LabelPoints()
 }
 
 //------------------------------------------------------------------------------
-void RestrictedVoronoi::Internals::Sweep(bool dual)
+void RestrictedVoronoi::Internals::Sweep(bool dual, int firstBlock, int lastBlock)
 {
   this->LabelPoints();
   const int triangleCount = this->Mesh.NumberOfTriangles();
   const int blockSize = (triangleCount + this->BlockCount - 1) / this->BlockCount;
-  vtkSMPTools::For(0, this->BlockCount, 1,
+  vtkSMPTools::For(firstBlock, lastBlock, 1,
     [&](int first, int last)
     {
       Scratch scratch;
@@ -1073,11 +1074,15 @@ bool RestrictedVoronoi::ComputeCellSums(CellSums& sums)
   {
     return this->Fail("set a mesh and sites before computing cell sums");
   }
-  d.Sweep(false);
+  // Under MPI this part clips its share of the blocks of triangles (each cell's pieces are
+  // summed over all parts by SumAcrossParts).
+  const int firstBlock = d.BlockCount * this->Part / this->Parts;
+  const int lastBlock = d.BlockCount * (this->Part + 1) / this->Parts;
+  d.Sweep(false, firstBlock, lastBlock);
   sums.Resize(d.Sites.size() / 3, true);
-  for (const auto& pieces : d.BlockPieces)
+  for (int block = firstBlock; block < lastBlock; ++block)
   {
-    for (const Piece& piece : pieces)
+    for (const Piece& piece : d.BlockPieces[block])
     {
       sums.Mass[piece.Site] += piece.Mass;
       sums.MomentX[piece.Site] += piece.Moment[0];
@@ -1085,6 +1090,10 @@ bool RestrictedVoronoi::ComputeCellSums(CellSums& sums)
       sums.MomentZ[piece.Site] += piece.Moment[2];
       sums.Energy[piece.Site] += piece.Energy;
     }
+  }
+  if (!this->SumAcrossParts(sums))
+  {
+    return this->Fail("the cell sums of the other processes sharing the work did not arrive");
   }
   return true;
 }
@@ -1097,7 +1106,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   {
     return this->Fail("set a mesh and sites before computing the dual");
   }
-  d.Sweep(true);
+  d.Sweep(true, 0, d.BlockCount);
   dual = RestrictedDual();
   // The pieces (one per cell and triangle), in block order, and which piece a cell has in a
   // triangle.

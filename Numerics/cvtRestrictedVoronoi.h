@@ -51,7 +51,11 @@ struct RestrictedDual
   std::vector<double> SplitPoints;
 };
 
-class CVTNUMERICS_EXPORT RestrictedVoronoi : public EngineErrors
+/// Under MPI (ShareWork) each part clips its share of the blocks of triangles for the cell
+/// sums; the dual is computed whole by every part.
+class CVTNUMERICS_EXPORT RestrictedVoronoi
+  : public EngineErrors
+  , public SharedCellSums
 {
 public:
   RestrictedVoronoi();

@@ -2,8 +2,8 @@
 #ifndef cvtSampling_h
 #define cvtSampling_h
 
-#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
+#include "cvtNumericsModule.h" // for export macro
 
 #include <cstdint>
 #include <random>

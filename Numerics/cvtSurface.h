@@ -5,8 +5,8 @@
 #ifndef cvtSurface_h
 #define cvtSurface_h
 
-#include "cvtNumericsModule.h" // for export macro
 #include "cvtEngine.h"
+#include "cvtNumericsModule.h" // for export macro
 
 #include <array>
 #include <cstdint>
@@ -47,8 +47,9 @@ CVTNUMERICS_EXPORT std::vector<double> SampleSurfaceSites(
 /// For every site i, the nearest point to targets[i] on the triangles of the pixels labelled i
 /// (Rong 4.3: each pixel checks the two triangles of its quad; the minimum over the cell wins),
 /// with the pixel nearest to it. Sites whose cell is empty keep `sites[i]` and `pixels[i]`.
-CVTNUMERICS_EXPORT void NearestPointsInCells(const GeometryImage& image, const std::vector<int>& labels,
-  const std::vector<double>& targets, std::vector<double>& sites, std::vector<long long>& pixels);
+CVTNUMERICS_EXPORT void NearestPointsInCells(const GeometryImage& image,
+  const std::vector<int>& labels, const std::vector<double>& targets, std::vector<double>& sites,
+  std::vector<long long>& pixels);
 
 /// The dual triangulation of a labelling: one triangle per pixel corner where three cells
 /// meet (two where four meet, split along the shorter diagonal), oriented like the image,

@@ -1,6 +1,7 @@
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
 #include "cvtSampling.h"
+#include "cvtTwoRanks.h"
 
 #include <gtest/gtest.h>
 
@@ -140,21 +141,7 @@ TEST(ExactEngine, SharedWorkGivesTheSumsOfOneProcessToTheBit)
 
   std::vector<double> fromPartOne;
   cvt::ExactEngine partOne, partZero;
-  partOne.ShareWork(1, 2,
-    [&fromPartOne](std::vector<double>& sums)
-    {
-      fromPartOne = sums; // what part one sends; it keeps its own half
-      return true;
-    });
-  partZero.ShareWork(0, 2,
-    [&fromPartOne](std::vector<double>& sums)
-    {
-      for (size_t k = 0; k < sums.size(); ++k)
-      {
-        sums[k] += fromPartOne[k];
-      }
-      return true;
-    });
+  cvttest::PlayTwoRanks(partZero, partOne, fromPartOne);
   cvt::CellSums ownHalf, combined;
   ASSERT_TRUE(partOne.SetDomain(grid, density) && partOne.SetSites(sites));
   ASSERT_TRUE(partOne.ComputeCellSums(ownHalf));

@@ -9,6 +9,7 @@
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSampling.h"
 #include "cvtSurfaceMesh.h"
+#include "cvtTwoRanks.h"
 
 #include "vtkSMPTools.h"
 
@@ -18,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -364,6 +366,46 @@ TEST(RestrictedVoronoi, SumsDoNotDependOnTheThreadCount)
   }
   EXPECT_EQ(one.Energy, two.Energy);
   EXPECT_EQ(one.MomentX, two.MomentX);
+}
+
+TEST(RestrictedVoronoi, SharedWorkAddsUpToTheSumsOfOneProcess)
+{
+  // Two engines play two MPI ranks: each clips half of the blocks of triangles; part 1 hands
+  // its sums over, part 0 adds them to its own. The sum is one process's, up to the order of
+  // the additions.
+  const cvt::SurfaceMesh mesh = Sphere(4);
+  const std::vector<double> sites = SitesNearSphere(200, 9);
+  cvt::CellSums whole;
+  cvt::RestrictedVoronoi alone;
+  ASSERT_TRUE(alone.SetMesh(mesh) && alone.SetSites(sites) && alone.ComputeCellSums(whole));
+
+  std::vector<double> fromPartOne;
+  cvt::RestrictedVoronoi partOne, partZero;
+  cvttest::PlayTwoRanks(partZero, partOne, fromPartOne);
+  cvt::CellSums ownShare, combined;
+  ASSERT_TRUE(partOne.SetMesh(mesh) && partOne.SetSites(sites));
+  ASSERT_TRUE(partOne.ComputeCellSums(ownShare));
+  ASSERT_EQ(fromPartOne.size(), 5 * whole.Size()); // mass, three moments, energy
+  const double ownMass = std::accumulate(ownShare.Mass.begin(), ownShare.Mass.end(), 0.0);
+  const double wholeMass = std::accumulate(whole.Mass.begin(), whole.Mass.end(), 0.0);
+  EXPECT_GT(ownMass, 0.3 * wholeMass); // about half of the sphere each
+  EXPECT_LT(ownMass, 0.7 * wholeMass);
+  ASSERT_TRUE(partZero.SetMesh(mesh) && partZero.SetSites(sites));
+  ASSERT_TRUE(partZero.ComputeCellSums(combined));
+  for (size_t i = 0; i < whole.Size(); ++i)
+  {
+    EXPECT_NEAR(combined.Mass[i], whole.Mass[i], 1e-12 * wholeMass) << "site " << i;
+    EXPECT_NEAR(combined.MomentZ[i], whole.MomentZ[i], 1e-12 * wholeMass) << "site " << i;
+    EXPECT_NEAR(combined.Energy[i], whole.Energy[i], 1e-12 * whole.TotalEnergy()) << "site " << i;
+  }
+
+  // A part whose exchange fails says so.
+  cvt::RestrictedVoronoi cutOff;
+  cutOff.ShareWork(0, 2, [](std::vector<double>&) { return false; });
+  ASSERT_TRUE(cutOff.SetMesh(mesh) && cutOff.SetSites(sites));
+  cvt::CellSums none;
+  EXPECT_FALSE(cutOff.ComputeCellSums(none));
+  EXPECT_NE(cutOff.GetLastError().find("other processes"), std::string::npos);
 }
 
 TEST(RestrictedVoronoi, OptimisedSphereRemeshIsAClosedOrientedSphere)

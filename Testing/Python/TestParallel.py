@@ -3,7 +3,8 @@
 Every rank runs the same CVT and keeps its share of each output, so the pieces together hold
 each site, triangle and history row once, and the same numbers as one process computing alone
 (the filters run here in this process, through the Python modules, as the reference). On the
-CPU engine the image filter's ranks share the cell integrals."""
+CPU engine the ranks share the cell integrals: of the image's cells, of the input mesh's
+triangles for the remesh."""
 import sys
 
 from paraview import servermanager
@@ -95,6 +96,16 @@ def main(argv):
     check_same("remesh: triangles", counts(remesh, 2)[1], alone.GetRemeshOutput().GetNumberOfCells())
     check_same("remesh: labelled input triangles", counts(remesh, 1)[1],
                alone.GetLabelsOutput().GetNumberOfCells())
+    # The ranks share the clipping of the input's triangles: each sums its share of them, and
+    # the sums are added across ranks, in another order than one process adds them (the last
+    # bits differ, not the result).
+    fields = servermanager.Fetch(remesh).GetFieldData()
+    shared = fields.GetArray("EngineRanks").GetValue(0)
+    check("remesh: cell sums shared by %d ranks" % shared, shared == ranks)
+    energy = fields.GetArray("Energy").GetValue(0)
+    reference = alone.GetSitesOutput().GetFieldData().GetArray("Energy").GetValue(0)
+    check("remesh: energy %.17g (alone %.17g)" % (energy, reference),
+          abs(energy - reference) <= 1e-9 * abs(reference))
 
     print("parallel: %s" % ("ok" if not failures else "FAILED (%d)" % len(failures)))
 
