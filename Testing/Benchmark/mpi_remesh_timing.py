@@ -1,0 +1,28 @@
+"""Seconds of CVT Remesh's stages under pvbatch, alone or under MPI.
+
+    [mpiexec -n N] pvbatch Testing/Benchmark/mpi_remesh_timing.py PLUGIN MESH [SITES]
+
+MESH: any mesh ParaView reads (.obj .stl .ply .vtp ...); SITES (default 5000). Prints one line
+with the number of ranks sharing the cell sums, the whole update's seconds, the optimisation's
+and the remesh's seconds (the filter's own clocks) and the energy. VTK_SMP_BACKEND_IN_USE=
+Sequential gives one thread per rank."""
+import sys
+import time
+
+from paraview import servermanager
+from paraview.simple import LoadPlugin, OpenDataFile
+
+plugin, mesh = sys.argv[1], sys.argv[2]
+sites = int(sys.argv[3]) if len(sys.argv) > 3 else 5000
+LoadPlugin(plugin, remote=False, ns=globals())
+source = OpenDataFile(mesh)
+source.UpdatePipeline()
+remesh = CVTRemesh(Input=source, NumberOfSites=sites)
+start = time.time()
+remesh.UpdatePipeline()
+update = time.time() - start
+fields = servermanager.Fetch(remesh).GetFieldData()
+value = lambda name: fields.GetArray(name).GetValue(0)
+print("%s, %d sites, %d rank(s) sharing: update %.2f s, optimise %.2f s, remesh %.2f s, "
+      "energy %.12g" % (mesh.rsplit("/", 1)[-1], sites, value("EngineRanks"), update,
+                        value("OptimizeSeconds"), value("RemeshSeconds"), value("Energy")))
