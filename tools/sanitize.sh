@@ -28,8 +28,8 @@ cmake --build "$BUILD" -j"$(nproc)" > "$BUILD/sanitize-build.log" 2>&1 ||
 # tracer ("Tracer caught signal 11", google/sanitizers#1322).
 common=halt_on_error=1:abort_on_error=1:intercept_tls_get_addr=0:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-hosted='^(python-modules|example-stipple-python|example-remesh-python|paraview-plugin|paraview-client-server|example-paraview|example-pvbatch|paraview-mpi|paraview-gui-.*|install-downstream|x11-window-context)$'
-# paraview-mpi runs in pvbatch under mpiexec. x11-window-context is hosted too: Mesa unloads its GLX driver before exit, so a leak of the
+hosted='^(python-modules|example-stipple-python|example-remesh-python|paraview-plugin|paraview-client-server|example-paraview|example-pvbatch|paraview-mpi.*|paraview-gui-.*|install-downstream|x11-window-context)$'
+# paraview-mpi and paraview-mpi-abort run in pvbatch under mpiexec. x11-window-context is hosted too: Mesa unloads its GLX driver before exit, so a leak of the
 # driver shows as <unknown module> and cannot be told from the project's.
 rc=0
 echo "== sanitizers, pass 1: the project's programs, leak checking on"
