@@ -13,10 +13,10 @@
 #include "vtkTimeStamp.h"    // for RequestOutcome
 
 class vtkAlgorithm;
+class vtkCellArray;
 class vtkFieldData;
 class vtkImageData;
 class vtkInformation;
-class vtkCellArray;
 class vtkInformationVector;
 class vtkPoints;
 class vtkPolyData;

@@ -283,14 +283,15 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
   // reversed where the repairs reoriented the input): vtkPolyDataNormals makes the remesh's own.
   pd->CopyNormalsOff();
   pd->InterpolateAllocate(source, static_cast<vtkIdType>(remesh.SiteIds.size()));
+  vtkNew<vtkIdList> corners;
+  corners->SetNumberOfIds(3);
   for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
   {
     points->SetPoint(static_cast<vtkIdType>(v), &remesh.Points[3 * v]);
     const int t = std::max(0, remesh.SourceTriangles[v]);
-    vtkNew<vtkIdList> corners;
     for (int k = 0; k < 3; ++k)
     {
-      corners->InsertNextId(mesh.Triangles[t][k]);
+      corners->SetId(k, mesh.Triangles[t][k]);
     }
     double weights[3];
     for (int k = 0; k < 3; ++k)

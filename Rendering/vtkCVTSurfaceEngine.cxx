@@ -399,9 +399,9 @@ bool vtkCVTSurfaceEngine::AttachNearestTargets(int width, int height)
 bool vtkCVTSurfaceEngine::NearestPointsInCells(
   const std::vector<double>& targets, std::vector<double>& sites, std::vector<long long>& pixels)
 {
-  const int sitesSet = this->Internal->Sites.GetNumberOfSites();
-  if (sitesSet <= 0 || targets.size() != 3 * static_cast<size_t>(sitesSet) ||
-    sites.size() != targets.size() || pixels.size() != targets.size() / 3)
+  const int n = this->Internal->Sites.GetNumberOfSites();
+  if (n <= 0 || targets.size() != 3 * static_cast<size_t>(n) || sites.size() != targets.size() ||
+    pixels.size() != targets.size() / 3)
   {
     return this->Fail("NearestPointsInCells needs a labelling and one target per site");
   }
@@ -421,7 +421,6 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
   vtkOpenGLState* state = window->GetState();
   Internals& in = *this->Internal;
-  const int n = sitesSet;
   const int* slotSize = in.Sites.GetSlotSize();
   if (in.Targets.Set(window, n, this->Context->GetMaximumTextureSize(),
         [&targets](int i, float* texel)

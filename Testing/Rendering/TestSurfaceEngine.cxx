@@ -126,6 +126,7 @@ TEST(SurfaceEngine, ConstrainedCentroidsMatchTheCpu)
   }
   EXPECT_GE(samePixel, 145);
 }
+
 TEST(SurfaceEngine, AdaptiveStepLabelsLikeTheFullStep)
 {
   // Once the sites are known to be spread, the labelling starts from a shorter step (fewer
