@@ -49,7 +49,11 @@ int vtkCVTGPUAlgorithm::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   this->ContextDescription.clear(); // set again by a run on the OpenGL engine
-  return this->Superclass::RequestData(request, inputVector, outputVector);
+  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
+  this->LastJumpFloodingStep = this->OpenGLEngine && !this->ContextDescription.empty()
+    ? this->OpenGLEngine->GetLastInitialStep()
+    : 0;
+  return result;
 }
 
 //------------------------------------------------------------------------------
@@ -65,6 +69,7 @@ void vtkCVTGPUAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Engine: " << cvtvtk::EngineKindName(this->Engine) << "\n";
   os << indent << "AdaptiveJumpFlooding: " << this->AdaptiveJumpFlooding << "\n";
+  os << indent << "LastJumpFloodingStep: " << this->LastJumpFloodingStep << "\n";
   os << indent << "ContextDescription: "
      << (this->ContextDescription.empty() ? "(none)" : this->ContextDescription) << "\n";
   os << indent << "RenderWindow: " << this->RenderWindow.Get() << "\n";

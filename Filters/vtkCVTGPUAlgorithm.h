@@ -67,6 +67,9 @@ public:
 
   /** Description of the OpenGL context the last run used (empty before a run or on the CPU). */
   const std::string& GetContextDescription() const { return this->ContextDescription; }
+  /** Initial jump flooding step of the last run's last labelling (0 before a run or on the
+   * CPU): shorter than the full step once AdaptiveJumpFlooding has shortened it. */
+  int GetLastJumpFloodingStep() const { return this->LastJumpFloodingStep; }
 
 protected:
   vtkCVTGPUAlgorithm();
@@ -95,6 +98,7 @@ protected:
   int Engine = AUTO;
   bool AdaptiveJumpFlooding = true;
   std::string ContextDescription;
+  int LastJumpFloodingStep = 0;
 
 private:
   void ConfigureOpenGLEngine();

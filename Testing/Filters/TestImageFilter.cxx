@@ -357,7 +357,8 @@ TEST(ImageFilter, EngineAndSolverOptionsReachTheEngine)
   // Whole pixels (SplitBoundaryPixels off) give a staircase energy, off the exact one; the
   // adaptive flooding changes nothing in the result; fewer L-BFGS corrections change the path.
   auto image = MakeImage(64, 64);
-  const auto run = [&image](bool split, bool adaptive, int corrections)
+  std::vector<int> lastSteps;
+  const auto run = [&image, &lastSteps](bool split, bool adaptive, int corrections)
   {
     vtkNew<vtkCVTImageFilter> filter;
     filter->SetInputData(image);
@@ -370,6 +371,7 @@ TEST(ImageFilter, EngineAndSolverOptionsReachTheEngine)
     filter->SetNumberOfCorrections(corrections);
     filter->ComputeExactEnergyOn();
     filter->Update();
+    lastSteps.push_back(filter->GetLastJumpFloodingStep());
     vtkFieldData* fields = filter->GetSitesOutput()->GetFieldData();
     return std::make_pair(fields->GetArray("Energy")->GetTuple1(0),
       std::abs(fields->GetArray("EnergyRelativeDifference")->GetTuple1(0)));
@@ -382,6 +384,9 @@ TEST(ImageFilter, EngineAndSolverOptionsReachTheEngine)
   EXPECT_GT(whole.second, 10.0 * exact.second);
   EXPECT_NEAR(full.first, exact.first, 1e-6 * exact.first);
   EXPECT_NE(short_memory.first, exact.first);
+  // The adaptive flooding starts from a shorter step than the full one (32 on 64 x 64).
+  EXPECT_LT(lastSteps[0], 32);
+  EXPECT_EQ(lastSteps[2], 32);
 }
 
 TEST(ImageFilter, GradientToleranceStops)

@@ -218,6 +218,29 @@ TEST(SurfaceFilter, SeedToleranceAndCorrectionsTakeEffect)
     h7->GetValueByName(10, "energy").ToDouble(), h1->GetValueByName(10, "energy").ToDouble());
 }
 
+TEST(SurfaceFilter, AdaptiveJumpFloodingReachesTheOpenGLEngine)
+{
+  // On: once the sites are spread the labelling starts from a shorter step than the full one
+  // (64 on 128 x 64); off: always the full step. On the CPU engine there is no flooding (0).
+  vtkNew<vtkCVTGeometryImageSource> source;
+  source->SetResolution(128, 64);
+  const auto lastStep = [&source](int engine, bool adaptive)
+  {
+    vtkNew<vtkCVTSurfaceFilter> cvt;
+    cvt->SetInputConnection(source->GetOutputPort());
+    cvt->SetNumberOfSites(150);
+    cvt->SetMaximumNumberOfIterations(10);
+    cvt->SetEngine(engine);
+    cvt->SetAdaptiveJumpFlooding(adaptive);
+    cvt->Update();
+    EXPECT_EQ(cvt->GetSitesOutput()->GetNumberOfPoints(), 150);
+    return cvt->GetLastJumpFloodingStep();
+  };
+  EXPECT_EQ(lastStep(vtkCVTSurfaceFilter::OPENGL, false), 64);
+  EXPECT_LT(lastStep(vtkCVTSurfaceFilter::OPENGL, true), 64);
+  EXPECT_EQ(lastStep(vtkCVTSurfaceFilter::CPU, true), 0);
+}
+
 TEST(SurfaceFilter, AbortStopsTheIterations)
 {
   vtkNew<vtkCVTGeometryImageSource> source;
