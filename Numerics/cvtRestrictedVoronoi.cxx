@@ -509,40 +509,74 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
   const size_t vertexCount = dual.Sites.size();
   dual.EulerCharacteristic.assign(vertexCount, 0);
   dual.SplitPoints.clear();
-  // (part, first point, second point or -1, what it adds), each mesh edge or point once.
-  std::vector<std::array<int, 4>> shared;
-  for (size_t p = 0; p < pieces.size(); ++p)
+  // What the mesh edges and points the pieces hold add, each once per part. Each is a key
+  // (first point, second point + 1 or 0, what it adds + 1), bucketed by part (a pass to count,
+  // one to fill) and sorted within each part: far quicker than one sort of them all.
+  const auto sharedKey = [](int first, int second, int adds)
   {
-    const SiteContact& c = *pieces[p];
-    const auto& tri = this->Mesh.Triangles[c.Triangle];
-    const int part = vertexOfPiece[p];
-    int euler = 1;
-    for (int k = 0; k < 3; ++k)
+    return (static_cast<std::uint64_t>(first) << 33) |
+      (static_cast<std::uint64_t>(second + 1) << 2) | static_cast<std::uint64_t>(adds + 1);
+  };
+  std::vector<size_t> partStart(vertexCount + 1, 0), cursor;
+  std::vector<std::uint64_t> shared;
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    if (pass == 1)
     {
-      if ((c.CornerMask >> k) & 1)
+      std::partial_sum(partStart.begin(), partStart.end(), partStart.begin());
+      cursor.assign(partStart.begin(), partStart.end() - 1);
+      shared.resize(partStart[vertexCount]);
+    }
+    for (size_t p = 0; p < pieces.size(); ++p)
+    {
+      const SiteContact& c = *pieces[p];
+      const auto& tri = this->Mesh.Triangles[c.Triangle];
+      const int part = vertexOfPiece[p];
+      int euler = 1;
+      for (int k = 0; k < 3; ++k)
       {
-        euler -= 1;
-        shared.push_back({ part, tri[k], -1, 1 });
+        const int next = (k + 1) % 3;
+        const int corner = (c.CornerMask >> k) & 1, edge = (c.EdgeMask >> k) & 1;
+        if (pass == 0)
+        {
+          partStart[part + 1] += corner + edge;
+          continue;
+        }
+        if (corner)
+        {
+          euler -= 1;
+          shared[cursor[part]++] = sharedKey(tri[k], -1, 1);
+        }
+        if (edge)
+        {
+          const int ends = corner + ((c.CornerMask >> next) & 1);
+          euler -= 1 - ends;
+          shared[cursor[part]++] =
+            sharedKey(std::min(tri[k], tri[next]), std::max(tri[k], tri[next]), 1 - ends);
+        }
       }
-      if ((c.EdgeMask >> k) & 1)
+      if (pass == 1)
       {
-        const int ends = ((c.CornerMask >> k) & 1) + ((c.CornerMask >> ((k + 1) % 3)) & 1);
-        euler -= 1 - ends;
-        shared.push_back({ part, std::min(tri[k], tri[(k + 1) % 3]),
-          std::max(tri[k], tri[(k + 1) % 3]), 1 - ends });
+        dual.EulerCharacteristic[part] += euler;
       }
     }
-    dual.EulerCharacteristic[part] += euler;
   }
-  std::sort(shared.begin(), shared.end());
-  for (size_t s = 0; s < shared.size(); ++s)
-  {
-    const auto& a = shared[s];
-    if (s == 0 || a[0] != shared[s - 1][0] || a[1] != shared[s - 1][1] || a[2] != shared[s - 1][2])
+  vtkSMPTools::For(0, static_cast<vtkIdType>(vertexCount),
+    [&](vtkIdType firstPart, vtkIdType lastPart)
     {
-      dual.EulerCharacteristic[a[0]] += a[3];
-    }
-  }
+      for (vtkIdType v = firstPart; v < lastPart; ++v)
+      {
+        const auto first = shared.begin() + partStart[v], last = shared.begin() + partStart[v + 1];
+        std::sort(first, last);
+        for (auto key = first; key != last; ++key)
+        {
+          if (key == first || (*key >> 2) != (*(key - 1) >> 2))
+          {
+            dual.EulerCharacteristic[v] += static_cast<int>(*key & 3u) - 1;
+          }
+        }
+      }
+    });
   // Parts that are not disks, and parts whose shared border has several pieces (they wrap
   // round a thin part and meet on both sides: their edge has more than two triangles).
   std::vector<char> wrapping(vertexCount, 0);
@@ -1108,8 +1142,8 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   }
   d.Sweep(true, 0, d.BlockCount);
   dual = RestrictedDual();
-  // The pieces (one per cell and triangle), in block order, and which piece a cell has in a
-  // triangle.
+  // The pieces (one per cell and triangle), in block order, hence in triangle order: those of
+  // triangle t are [firstPiece[t], firstPiece[t + 1]), a few at most, searched for a cell's.
   std::vector<const SiteContact*> pieces;
   for (const auto& block : d.BlockContacts)
   {
@@ -1118,14 +1152,30 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       pieces.push_back(&c);
     }
   }
-  const auto key = [](int site, int triangle)
-  { return (static_cast<std::uint64_t>(site) << 32) | static_cast<std::uint32_t>(triangle); };
-  std::unordered_map<std::uint64_t, int> pieceOf;
-  pieceOf.reserve(2 * pieces.size());
-  for (size_t p = 0; p < pieces.size(); ++p)
+  const auto byTriangle = [](const SiteContact* a, const SiteContact* b)
+  { return a->Triangle < b->Triangle; };
+  if (!std::is_sorted(pieces.begin(), pieces.end(), byTriangle))
   {
-    pieceOf.emplace(key(pieces[p]->Site, pieces[p]->Triangle), static_cast<int>(p));
+    std::stable_sort(pieces.begin(), pieces.end(), byTriangle);
   }
+  const int triangleCount = d.Mesh.NumberOfTriangles();
+  std::vector<int> firstPiece(triangleCount + 1, 0);
+  for (const SiteContact* c : pieces)
+  {
+    ++firstPiece[c->Triangle + 1];
+  }
+  std::partial_sum(firstPiece.begin(), firstPiece.end(), firstPiece.begin());
+  const auto pieceOf = [&](int site, int triangle)
+  {
+    for (int p = firstPiece[triangle]; p < firstPiece[triangle + 1]; ++p)
+    {
+      if (pieces[p]->Site == site)
+      {
+        return p;
+      }
+    }
+    return -1;
+  };
   // A restricted cell can have several connected parts (a thin plate: one on each side). Its
   // pieces are joined across the mesh edges they share; each part is a vertex of the dual
   // (the "multinerve"), so the remesh keeps the plate's two sides apart.
@@ -1148,16 +1198,21 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       {
         continue;
       }
-      const auto found = pieceOf.find(key(pieces[p]->Site, across));
-      if (found != pieceOf.end())
+      const int found = pieceOf(pieces[p]->Site, across);
+      if (found >= 0)
       {
-        parent[find(static_cast<int>(p))] = find(found->second);
+        parent[find(static_cast<int>(p))] = find(found);
       }
     }
   }
   // Pieces of a cell that hold the same mesh point touch there: one part (a jagged border's
   // teeth, a cell around a vertex).
-  std::unordered_map<std::uint64_t, int> pieceAtPoint;
+  // The first piece holding each point; a point held by several cells (a tie) is rare and
+  // looked up by cell.
+  std::vector<int> holderOfPoint(d.Mesh.NumberOfPoints(), -1);
+  std::unordered_map<std::uint64_t, int> otherHolders;
+  const auto key = [](int site, int point)
+  { return (static_cast<std::uint64_t>(site) << 32) | static_cast<std::uint32_t>(point); };
   for (size_t p = 0; p < pieces.size(); ++p)
   {
     for (int k = 0; k < 3; ++k)
@@ -1165,10 +1220,24 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       if ((pieces[p]->CornerMask >> k) & 1)
       {
         const int point = d.Mesh.Triangles[pieces[p]->Triangle][k];
-        const auto found = pieceAtPoint.emplace(key(pieces[p]->Site, point), static_cast<int>(p));
-        if (!found.second)
+        int& holder = holderOfPoint[point];
+        int other = -1;
+        if (holder < 0)
         {
-          parent[find(static_cast<int>(p))] = find(found.first->second);
+          holder = static_cast<int>(p);
+        }
+        else if (pieces[holder]->Site == pieces[p]->Site)
+        {
+          other = holder;
+        }
+        else
+        {
+          const auto found = otherHolders.emplace(key(pieces[p]->Site, point), static_cast<int>(p));
+          other = found.second ? -1 : found.first->second;
+        }
+        if (other >= 0)
+        {
+          parent[find(static_cast<int>(p))] = find(other);
         }
       }
     }
@@ -1194,9 +1263,9 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       bool found = true;
       for (int k = 0; k < 3 && found; ++k)
       {
-        const auto piece = pieceOf.find(key(t[k], t[3]));
-        found = piece != pieceOf.end();
-        triangle[k] = found ? vertexOfPiece[piece->second] : -1;
+        const int piece = pieceOf(t[k], t[3]);
+        found = piece >= 0;
+        triangle[k] = found ? vertexOfPiece[piece] : -1;
       }
       if (found && triangle[0] != triangle[1] && triangle[1] != triangle[2] &&
         triangle[2] != triangle[0])
