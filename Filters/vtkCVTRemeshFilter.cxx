@@ -56,22 +56,28 @@ struct TopologyRefinement
   cvt::Remesh Remesh;
   cvt::MeshTopology Topology;
   int Mismatch = std::numeric_limits<int>::max(); // TopologyMismatch against the input's
+  int ThinParts = 0; // cell parts round thin parts the remesh loses (RestrictedDual::ThinParts)
   int AddedSites = 0;
 };
 
-/// The remesh of `sites`, and while its topology is not the input's, that of `sites` with
-/// sites added where the dual asks for them (RestrictedDual::SplitPoints), in rounds settled by
-/// TopologyRoundIterations[0] Lloyd iterations each; if that fails, again from `sites` with
-/// the next count. Returns the first remesh with the input's topology, else the closest, in
-/// `best`; false (and `error`) when the engine fails.
+/// The remesh of `sites`, and while its topology is not the input's or cells wrap round thin
+/// parts it loses (a tail, a leg: RestrictedDual::ThinParts), that of `sites` with sites added
+/// where the dual asks for them (RestrictedDual::SplitPoints), in rounds settled by
+/// TopologyRoundIterations[0] Lloyd iterations each; if the topology still differs, again from
+/// `sites` with the next count. Thin parts alone get rounds while they become fewer. Returns
+/// the remesh with the input's topology and fewest thin parts, else the first of the closest
+/// topology, in `best`; false (and `error`) when the engine fails.
 bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
   const cvt::MeshTopology& input, const std::vector<double>& sites,
   const std::function<bool()>& aborted, TopologyRefinement& best, std::string& error)
 {
   cvt::RestrictedProblem problem(engine);
   std::vector<double> firstSplitPoints;
+  // Rounds since the best remesh or the fewest thin parts so far last improved.
+  int roundsWithoutGain = 0, fewestThinParts = std::numeric_limits<int>::max();
   // The remesh of the engine's current sites (`added` of them beyond `sites`) if closer to the
-  // input's topology than the best so far; the sites the dual would add next in `splitPoints`.
+  // input's topology, or with it and fewer thin parts, than the best so far; the sites the
+  // dual would add next in `splitPoints`.
   const auto consider = [&](size_t added, std::vector<double>& splitPoints)
   {
     cvt::RestrictedDual dual;
@@ -80,18 +86,32 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
       error = "the restricted Delaunay triangulation failed: " + engine.GetLastError();
       return false;
     }
+    splitPoints = std::move(dual.SplitPoints);
+    const bool fewerThinParts = dual.ThinParts < fewestThinParts;
+    fewestThinParts = std::min(fewestThinParts, dual.ThinParts);
+    // With the input's topology reached, only fewer thin parts can do better.
+    if (best.Mismatch == 0 && dual.ThinParts >= best.ThinParts)
+    {
+      ++roundsWithoutGain;
+      return true;
+    }
     cvt::Remesh candidate = cvt::BuildRemesh(dual, input.Loops.size(), 8, &mesh);
     const cvt::MeshTopology topology =
       cvt::ComputeMeshTopology(static_cast<int>(candidate.SiteIds.size()), candidate.Triangles);
     const int mismatch = TopologyMismatch(topology, input);
-    if (mismatch < best.Mismatch)
+    if (mismatch < best.Mismatch || (mismatch == 0 && dual.ThinParts < best.ThinParts))
     {
       best.Remesh = std::move(candidate);
       best.Topology = topology;
       best.Mismatch = mismatch;
+      best.ThinParts = dual.ThinParts;
       best.AddedSites = static_cast<int>(added);
+      roundsWithoutGain = 0;
     }
-    splitPoints = mismatch == 0 ? std::vector<double>() : std::move(dual.SplitPoints);
+    else
+    {
+      roundsWithoutGain = fewerThinParts ? 0 : roundsWithoutGain + 1;
+    }
     return true;
   };
   if (!engine.SetSites(sites))
@@ -103,13 +123,20 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
   {
     return false;
   }
+  // Thin parts alone are worth rounds while they become fewer, not the second count.
+  const auto worthAnotherRound = [&]()
+  { return best.Mismatch != 0 || (best.ThinParts != 0 && roundsWithoutGain < 2); };
   for (int settleIterations : TopologyRoundIterations)
   {
+    if (settleIterations != TopologyRoundIterations[0] && best.Mismatch == 0)
+    {
+      break;
+    }
     cvt::OptimizerResult refined; // the sites of the remesh: the CVT's, then those added
     refined.Sites = sites;
     std::vector<double> splitPoints = firstSplitPoints;
-    for (int round = 1;
-         best.Mismatch != 0 && !splitPoints.empty() && round <= MaximumTopologyRounds && !aborted();
+    for (int round = 1; worthAnotherRound() && !splitPoints.empty() &&
+         round <= MaximumTopologyRounds && !aborted();
          ++round)
     {
       cvt::SiteState more{ refined.Sites, {} };

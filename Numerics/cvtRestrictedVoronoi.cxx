@@ -509,6 +509,7 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
   const size_t vertexCount = dual.Sites.size();
   dual.EulerCharacteristic.assign(vertexCount, 0);
   dual.SplitPoints.clear();
+  dual.ThinParts = 0;
   // What the mesh edges and points the pieces hold add, each once per part. Each is a key
   // (first point, second point + 1 or 0, what it adds + 1), bucketed by part (a pass to count,
   // one to fill) and sorted within each part: far quicker than one sort of them all.
@@ -608,6 +609,7 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
     {
       continue;
     }
+    ++dual.ThinParts;
     const int wanted = notDisk(v) ? 3 * std::max(1, 1 - dual.EulerCharacteristic[v]) : 2;
     std::vector<double> gap(own.size());
     for (size_t k = 0; k < own.size(); ++k)

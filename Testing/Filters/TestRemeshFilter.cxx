@@ -27,6 +27,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -49,6 +50,20 @@ double Field(vtkDataObject* data, const char* name)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
   return array ? array->GetTuple1(0) : std::nan("");
+}
+
+/// The surface where the image's scalars are 0 (marching cubes).
+vtkSmartPointer<vtkPolyData> ZeroContour(vtkImageData* field)
+{
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(field);
+  contour->SetValue(0, 0.0);
+  contour->ComputeNormalsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->ShallowCopy(contour->GetOutput());
+  return surface;
 }
 
 /// Marching cubes of the union of `count` tori along x: a closed surface of genus `count`.
@@ -76,15 +91,31 @@ vtkSmartPointer<vtkPolyData> Tori(int count)
     values->SetValue(p, value);
   }
   field->GetPointData()->SetScalars(values);
-  vtkNew<vtkFlyingEdges3D> contour;
-  contour->SetInputData(field);
-  contour->SetValue(0, 0.0);
-  contour->ComputeNormalsOff();
-  contour->ComputeScalarsOff();
-  contour->Update();
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->ShallowCopy(contour->GetOutput());
-  return surface;
+  return ZeroContour(field);
+}
+
+/// Marching cubes of a unit ball with a tail: a tube of radius `tail` along x from the ball to
+/// x = 2.2, capped. Closed, genus 0; the tail is thinner than the cells of a few dozen sites.
+vtkSmartPointer<vtkPolyData> BallWithTail(double tail)
+{
+  const int nx = 104, ny = 64;
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(nx, ny, ny);
+  field->SetOrigin(-1.2, -1.2, -1.2);
+  field->SetSpacing(3.6 / (nx - 1), 2.4 / (ny - 1), 2.4 / (ny - 1));
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfValues(field->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < field->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    field->GetPoint(p, x);
+    const double along = std::clamp(x[0], 0.5, 2.2 - tail);
+    const double tube = std::sqrt((x[0] - along) * (x[0] - along) + x[1] * x[1] + x[2] * x[2]);
+    values->SetValue(
+      p, std::min(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 1.0, tube - tail));
+  }
+  field->GetPointData()->SetScalars(values);
+  return ZeroContour(field);
 }
 
 vtkSmartPointer<vtkPolyData> Sphere(double radius = 1.0, double x = 0.0)
@@ -228,6 +259,23 @@ TEST(RemeshFilter, ThinTubeKeepsItsGenusWithAddedSites)
   double range[2];
   ids->GetRange(range);
   EXPECT_EQ(range[1], 40 + Field(sites, "AddedSites") - 1);
+}
+
+TEST(RemeshFilter, ThinTailIsKeptWithAddedSites)
+{
+  // The tail (circumference 0.5) is thinner than the cells of 80 sites (about 0.45 across):
+  // its cells are rings or wrap round it, and have no dual triangles. The topology is the same
+  // without the tail, so only the cells say it is lost: sites are added until they are disks.
+  vtkSmartPointer<vtkPolyData> input = BallWithTail(0.08);
+  RemeshRun run(input, 80, 60);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 1, 0, 0);
+  EXPECT_GT(Field(run.Filter->GetSitesOutput(), "AddedSites"), 0);
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double tip = bounds[1];
+  run.Remesh()->GetBounds(bounds);
+  EXPECT_GT(bounds[1], tip - 0.2) << "the tail's tip is at x = " << tip;
 }
 
 TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)
