@@ -87,31 +87,26 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
       return false;
     }
     splitPoints = std::move(dual.SplitPoints);
-    const bool fewerThinParts = dual.ThinParts < fewestThinParts;
+    bool gain = dual.ThinParts < fewestThinParts;
     fewestThinParts = std::min(fewestThinParts, dual.ThinParts);
-    // With the input's topology reached, only fewer thin parts can do better.
-    if (best.Mismatch == 0 && dual.ThinParts >= best.ThinParts)
+    // With the input's topology reached, only fewer thin parts can do better: no remesh needed.
+    if (best.Mismatch != 0 || dual.ThinParts < best.ThinParts)
     {
-      ++roundsWithoutGain;
-      return true;
+      cvt::Remesh candidate = cvt::BuildRemesh(dual, input.Loops.size(), 8, &mesh);
+      const cvt::MeshTopology topology =
+        cvt::ComputeMeshTopology(static_cast<int>(candidate.SiteIds.size()), candidate.Triangles);
+      const int mismatch = TopologyMismatch(topology, input);
+      if (mismatch < best.Mismatch || (mismatch == 0 && dual.ThinParts < best.ThinParts))
+      {
+        best.Remesh = std::move(candidate);
+        best.Topology = topology;
+        best.Mismatch = mismatch;
+        best.ThinParts = dual.ThinParts;
+        best.AddedSites = static_cast<int>(added);
+        gain = true;
+      }
     }
-    cvt::Remesh candidate = cvt::BuildRemesh(dual, input.Loops.size(), 8, &mesh);
-    const cvt::MeshTopology topology =
-      cvt::ComputeMeshTopology(static_cast<int>(candidate.SiteIds.size()), candidate.Triangles);
-    const int mismatch = TopologyMismatch(topology, input);
-    if (mismatch < best.Mismatch || (mismatch == 0 && dual.ThinParts < best.ThinParts))
-    {
-      best.Remesh = std::move(candidate);
-      best.Topology = topology;
-      best.Mismatch = mismatch;
-      best.ThinParts = dual.ThinParts;
-      best.AddedSites = static_cast<int>(added);
-      roundsWithoutGain = 0;
-    }
-    else
-    {
-      roundsWithoutGain = fewerThinParts ? 0 : roundsWithoutGain + 1;
-    }
+    roundsWithoutGain = gain ? 0 : roundsWithoutGain + 1;
     return true;
   };
   if (!engine.SetSites(sites))
@@ -441,7 +436,8 @@ bool vtkCVTRemeshFilter::Compute(
   // the restricted cells have the closed-ball property (the restricted Delaunay triangulation
   // then has the surface's topology) or the rounds run out; then once more with longer
   // settling. The CVT's own sites, the output, stay as optimised.
-  // The remesh kept is the first whose topology is the input's, else the closest one.
+  // The remesh kept has the input's topology and the fewest such parts, else the closest
+  // topology.
   TopologyRefinement best;
   if (!RefineForTopology(
         engine, mesh, inputTopology, result.Sites, [this]() { return this->StopRequested(); }, best,

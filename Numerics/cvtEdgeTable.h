@@ -13,6 +13,12 @@
 namespace cvt
 {
 
+/// An ordered pair (a directed edge, a cell and a point, ...) as one number: a, then b.
+inline std::uint64_t DirectedKey(int a, int b)
+{
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+
 /// An undirected edge as one number: its smaller point, then its larger.
 inline std::uint64_t EdgeKey(int a, int b)
 {

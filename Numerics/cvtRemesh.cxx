@@ -53,11 +53,6 @@ double SmallestCorner(const double* p0, const double* p1, const double* p2)
   return *std::min_element(angle, angle + 3);
 }
 
-std::uint64_t DirectedKey(int a, int b)
-{
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
-
 /// The unit normal of triangle p0 p1 p2 (zero when degenerate).
 void UnitNormal(const double* p0, const double* p1, const double* p2, double n[3])
 {

@@ -8,6 +8,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -511,56 +512,46 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
   dual.SplitPoints.clear();
   dual.ThinParts = 0;
   // What the mesh edges and points the pieces hold add, each once per part. Each is a key
-  // (first point, second point + 1 or 0, what it adds + 1), bucketed by part (a pass to count,
-  // one to fill) and sorted within each part: far quicker than one sort of them all.
+  // (first point, second point + 1 or 0, what it adds + 1), bucketed by part (counted, then
+  // filled) and sorted within each part: far quicker than one sort of them all.
   const auto sharedKey = [](int first, int second, int adds)
   {
     return (static_cast<std::uint64_t>(first) << 33) |
       (static_cast<std::uint64_t>(second + 1) << 2) | static_cast<std::uint64_t>(adds + 1);
   };
-  std::vector<size_t> partStart(vertexCount + 1, 0), cursor;
-  std::vector<std::uint64_t> shared;
-  for (int pass = 0; pass < 2; ++pass)
+  std::vector<size_t> partStart(vertexCount + 1, 0);
+  for (size_t p = 0; p < pieces.size(); ++p)
   {
-    if (pass == 1)
+    partStart[vertexOfPiece[p] + 1] +=
+      std::bitset<3>(pieces[p]->CornerMask).count() + std::bitset<3>(pieces[p]->EdgeMask).count();
+  }
+  std::partial_sum(partStart.begin(), partStart.end(), partStart.begin());
+  std::vector<size_t> cursor(partStart.begin(), partStart.end() - 1);
+  std::vector<std::uint64_t> shared(partStart[vertexCount]);
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    const SiteContact& c = *pieces[p];
+    const auto& tri = this->Mesh.Triangles[c.Triangle];
+    const int part = vertexOfPiece[p];
+    int euler = 1;
+    for (int k = 0; k < 3; ++k)
     {
-      std::partial_sum(partStart.begin(), partStart.end(), partStart.begin());
-      cursor.assign(partStart.begin(), partStart.end() - 1);
-      shared.resize(partStart[vertexCount]);
-    }
-    for (size_t p = 0; p < pieces.size(); ++p)
-    {
-      const SiteContact& c = *pieces[p];
-      const auto& tri = this->Mesh.Triangles[c.Triangle];
-      const int part = vertexOfPiece[p];
-      int euler = 1;
-      for (int k = 0; k < 3; ++k)
+      const int next = (k + 1) % 3;
+      const int corner = (c.CornerMask >> k) & 1;
+      if (corner)
       {
-        const int next = (k + 1) % 3;
-        const int corner = (c.CornerMask >> k) & 1, edge = (c.EdgeMask >> k) & 1;
-        if (pass == 0)
-        {
-          partStart[part + 1] += corner + edge;
-          continue;
-        }
-        if (corner)
-        {
-          euler -= 1;
-          shared[cursor[part]++] = sharedKey(tri[k], -1, 1);
-        }
-        if (edge)
-        {
-          const int ends = corner + ((c.CornerMask >> next) & 1);
-          euler -= 1 - ends;
-          shared[cursor[part]++] =
-            sharedKey(std::min(tri[k], tri[next]), std::max(tri[k], tri[next]), 1 - ends);
-        }
+        euler -= 1;
+        shared[cursor[part]++] = sharedKey(tri[k], -1, 1);
       }
-      if (pass == 1)
+      if ((c.EdgeMask >> k) & 1)
       {
-        dual.EulerCharacteristic[part] += euler;
+        const int ends = corner + ((c.CornerMask >> next) & 1);
+        euler -= 1 - ends;
+        shared[cursor[part]++] =
+          sharedKey(std::min(tri[k], tri[next]), std::max(tri[k], tri[next]), 1 - ends);
       }
     }
+    dual.EulerCharacteristic[part] += euler;
   }
   vtkSMPTools::For(0, static_cast<vtkIdType>(vertexCount),
     [&](vtkIdType firstPart, vtkIdType lastPart)
@@ -1213,8 +1204,6 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   // looked up by cell.
   std::vector<int> holderOfPoint(d.Mesh.NumberOfPoints(), -1);
   std::unordered_map<std::uint64_t, int> otherHolders;
-  const auto key = [](int site, int point)
-  { return (static_cast<std::uint64_t>(site) << 32) | static_cast<std::uint32_t>(point); };
   for (size_t p = 0; p < pieces.size(); ++p)
   {
     for (int k = 0; k < 3; ++k)
@@ -1234,7 +1223,8 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         }
         else
         {
-          const auto found = otherHolders.emplace(key(pieces[p]->Site, point), static_cast<int>(p));
+          const auto found =
+            otherHolders.emplace(DirectedKey(pieces[p]->Site, point), static_cast<int>(p));
           other = found.second ? -1 : found.first->second;
         }
         if (other >= 0)

@@ -49,8 +49,8 @@ struct RestrictedDual
   /// split pairs of parts that meet along several curves (round a thin part: their dual edge
   /// has more than two triangles).
   std::vector<double> SplitPoints;
-  /// How many parts SplitPoints cuts: parts that are not disks, wrap round a thin part, or fold
-  /// over one (a flap, a tube's end). The remesh loses what they cover.
+  /// How many parts SplitPoints cuts (parts that are not disks or that wrap round a thin
+  /// part): the remesh loses what they cover.
   int ThinParts = 0;
 };
 
