@@ -53,6 +53,7 @@ int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
 /// A remesh and how it came about.
 struct TopologyRefinement
 {
+  cvt::RestrictedDual Dual; // of the sites of the remesh
   cvt::Remesh Remesh;
   cvt::MeshTopology Topology;
   int Mismatch = std::numeric_limits<int>::max(); // TopologyMismatch against the input's
@@ -89,19 +90,17 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
     splitPoints = std::move(dual.SplitPoints);
     bool gain = dual.ThinParts < fewestThinParts;
     fewestThinParts = std::min(fewestThinParts, dual.ThinParts);
-    // With the input's topology reached, only fewer thin parts can do better: no remesh needed.
+    // With the input's topology reached, only fewer thin parts can do better.
     if (best.Mismatch != 0 || dual.ThinParts < best.ThinParts)
     {
-      cvt::Remesh candidate = cvt::BuildRemesh(dual, input.Loops.size(), 8, &mesh);
-      const cvt::MeshTopology topology =
-        cvt::ComputeMeshTopology(static_cast<int>(candidate.SiteIds.size()), candidate.Triangles);
+      const cvt::MeshTopology topology = cvt::RemeshTopology(dual, input.Loops.size());
       const int mismatch = TopologyMismatch(topology, input);
       if (mismatch < best.Mismatch || (mismatch == 0 && dual.ThinParts < best.ThinParts))
       {
-        best.Remesh = std::move(candidate);
+        best.Dual = std::move(dual);
         best.Topology = topology;
         best.Mismatch = mismatch;
-        best.ThinParts = dual.ThinParts;
+        best.ThinParts = best.Dual.ThinParts;
         best.AddedSites = static_cast<int>(added);
         gain = true;
       }
@@ -149,6 +148,11 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
       }
     }
   }
+  // Only the chosen dual is shaped into a remesh (most of the cost of one).
+  best.Remesh = cvt::BuildRemesh(best.Dual, input.Loops.size(), 8, &mesh);
+  best.Topology =
+    cvt::ComputeMeshTopology(static_cast<int>(best.Remesh.SiteIds.size()), best.Remesh.Triangles);
+  best.Mismatch = TopologyMismatch(best.Topology, input);
   return true;
 }
 

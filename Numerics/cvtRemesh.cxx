@@ -789,7 +789,6 @@ std::vector<std::array<int, 3>> TriangulateHole(
   }
   return triangles;
 }
-}
 
 /// Vertices at the same place (the copies of a split pinched vertex, parts of one cell pinned
 /// to the same corner) would be merged again by any point-merging filter downstream (VTK's
@@ -843,8 +842,10 @@ int SeparateCoincidentVertices(Remesh& remesh)
   return moved;
 }
 
-Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole,
-  const SurfaceMesh* surface)
+/// The remesh's triangles and vertices from the dual, before any shaping (BuildRemesh's steps up
+/// to the flips); `dualOf` gets the dual vertex of each remesh vertex.
+Remesh ConnectRemesh(
+  const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole, std::vector<int>& dualOf)
 {
   Remesh remesh;
   // Keep triangles whose directed edges are all new: a second triangle on an edge in the same
@@ -993,7 +994,7 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
   }
   // Vertices: the used sites, at their surface (or border) points.
   std::unordered_map<int, int> vertexOf;
-  std::vector<int> dualOf; // the dual vertex of each remesh vertex
+  dualOf.clear();
   for (auto& t : kept)
   {
     for (int& site : t)
@@ -1036,6 +1037,31 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       remesh.SourceTriangles[t[widest]] = dual.SurfaceTriangles[i];
     }
   }
+  return remesh;
+}
+
+/// Sheets that meet only at a vertex (a part thinner than the cells, a border touching itself)
+/// get a vertex each, so the remesh is manifold at its vertices too.
+void SplitPinchedVertices(Remesh& remesh)
+{
+  for (int v : SplitPinchedPoints(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles))
+  {
+    const size_t i = static_cast<size_t>(v);
+    remesh.Points.insert(remesh.Points.end(), &remesh.Points[3 * i], &remesh.Points[3 * i] + 3);
+    remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(),
+      &remesh.SourceBarycentric[3 * i], &remesh.SourceBarycentric[3 * i] + 3);
+    remesh.SourceTriangles.push_back(remesh.SourceTriangles[i]);
+    remesh.SiteIds.push_back(remesh.SiteIds[i]);
+    ++remesh.SplitVertices;
+  }
+}
+} // namespace
+
+Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole,
+  const SurfaceMesh* surface)
+{
+  std::vector<int> dualOf;
+  Remesh remesh = ConnectRemesh(dual, inputBoundaryLoops, maximumHole, dualOf);
   {
     std::vector<char> pinned(remesh.SiteIds.size());
     for (size_t v = 0; v < pinned.size(); ++v)
@@ -1069,20 +1095,17 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, true);
     }
   }
-  // Sheets that meet only at a vertex (a part thinner than the cells, a border touching
-  // itself) get a vertex each, so the remesh is manifold at its vertices too.
-  for (int v : SplitPinchedPoints(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles))
-  {
-    const size_t i = static_cast<size_t>(v);
-    remesh.Points.insert(remesh.Points.end(), &remesh.Points[3 * i], &remesh.Points[3 * i] + 3);
-    remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(),
-      &remesh.SourceBarycentric[3 * i], &remesh.SourceBarycentric[3 * i] + 3);
-    remesh.SourceTriangles.push_back(remesh.SourceTriangles[i]);
-    remesh.SiteIds.push_back(remesh.SiteIds[i]);
-    ++remesh.SplitVertices;
-  }
+  SplitPinchedVertices(remesh);
   remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);
   return remesh;
+}
+
+MeshTopology RemeshTopology(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
+{
+  std::vector<int> dualOf;
+  Remesh remesh = ConnectRemesh(dual, inputBoundaryLoops, maximumHole, dualOf);
+  SplitPinchedVertices(remesh);
+  return ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
 }
 
 } // namespace cvt

@@ -6,6 +6,7 @@
 
 #include "cvtNumericsModule.h" // for export macro
 #include "cvtRestrictedVoronoi.h"
+#include "cvtSurfaceMesh.h"
 
 #include <array>
 #include <vector>
@@ -44,6 +45,12 @@ struct Remesh
 /// free vertices of thin triangles left then search the surface around them for wider places.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
+
+/// The topology of BuildRemesh's remesh of `dual` without building it whole: its triangles and
+/// split vertices without the shaping (flips, moves and collapses keep the topology). For
+/// choosing among many duals the one to build.
+CVTNUMERICS_EXPORT MeshTopology RemeshTopology(
+  const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole = 8);
 
 } // namespace cvt
 

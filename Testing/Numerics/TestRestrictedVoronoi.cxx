@@ -557,6 +557,11 @@ TEST(RestrictedVoronoi, RemeshOfThinPartsIsManifold)
   EXPECT_EQ(parts.Components, 2);
   EXPECT_EQ(parts.BoundaryLoops, 0);
   EXPECT_EQ(parts.EulerCharacteristic, 4); // two spheres
+  // The topology alone, without building the remesh, is the same.
+  const cvt::MeshTopology quick = cvt::RemeshTopology(dual, 0);
+  EXPECT_EQ(quick.Components, 2);
+  EXPECT_EQ(quick.BoundaryLoops, 0);
+  EXPECT_EQ(quick.EulerCharacteristic, 4);
 }
 
 TEST(RestrictedVoronoi, RemeshFlipsThinTrianglesButNotFeatureEdges)
