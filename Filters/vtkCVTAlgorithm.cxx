@@ -36,6 +36,16 @@ void vtkCVTAlgorithm::CopyOptimizerSettings(vtkCVTAlgorithm* other)
 }
 
 //------------------------------------------------------------------------------
+void vtkCVTAlgorithm::ShareRanksLike(vtkInformation* outerRequest)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const bool piece = outerRequest && outerRequest->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
+    outerRequest->Has(SDDP::UPDATE_PIECE_NUMBER());
+  this->OuterPiece = piece ? outerRequest->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+  this->OuterPieces = piece ? outerRequest->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) : 0;
+}
+
+//------------------------------------------------------------------------------
 vtkPolyData* vtkCVTAlgorithm::GetSitesOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(SitesPort));
@@ -110,9 +120,18 @@ int vtkCVTAlgorithm::ShareCellSumsAcrossRanks(
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
   vtkInformation* info = outputVector->GetInformationObject(0);
-  const bool allRanksRun = ranks > 1 && info->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
-    info->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) == ranks && info->Has(SDDP::UPDATE_PIECE_NUMBER()) &&
-    info->Get(SDDP::UPDATE_PIECE_NUMBER()) == controller->GetLocalProcessId();
+  int piece = 0, pieces = 1;
+  if (this->OuterPieces > 0)
+  {
+    piece = this->OuterPiece;
+    pieces = this->OuterPieces;
+  }
+  else if (info->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) && info->Has(SDDP::UPDATE_PIECE_NUMBER()))
+  {
+    piece = info->Get(SDDP::UPDATE_PIECE_NUMBER());
+    pieces = info->Get(SDDP::UPDATE_NUMBER_OF_PIECES());
+  }
+  const bool allRanksRun = ranks > 1 && pieces == ranks && piece == controller->GetLocalProcessId();
   int canShare = engine && ready ? 1 : 0;
   if (allRanksRun)
   {
@@ -192,4 +211,9 @@ void vtkCVTAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
   os << indent << "NumberOfCorrections: " << this->NumberOfCorrections << "\n";
   os << indent << "FailPipelineOnError: " << this->FailPipelineOnError << "\n";
+  if (this->OuterPieces > 0)
+  {
+    os << indent << "ShareRanksLike: piece " << this->OuterPiece << " of " << this->OuterPieces
+       << "\n";
+  }
 }

@@ -126,6 +126,14 @@ public:
   /** Takes the optimiser properties (sites, seed, method, stop rules) of another CVT filter. */
   void CopyOptimizerSettings(vtkCVTAlgorithm* other);
 
+  /**
+   * For a filter that runs this one inside its own request under MPI: share the cell sums
+   * across the ranks as if this filter's request asked for the outer request's piece `piece`
+   * of `pieces` (see ShareCellSumsAcrossRanks), while its own outputs stay whole (the outer
+   * filter keeps its share of its own). Take it from the outer request's output information.
+   */
+  void ShareRanksLike(vtkInformation* outerRequest);
+
   ///@{
   /** Typed access to the outputs every CVT filter has. */
   vtkPolyData* GetSitesOutput();
@@ -166,7 +174,8 @@ protected:
    * computes alone. While they share, they stop together: each reduction carries the ranks'
    * AbortExecute, and an abort asked on one rank stops all of them at the same step (a rank
    * that stopped alone would leave the others waiting in the next reduction). A filter updated
-   * on one rank alone (piece 0 of 1) shares nothing. Returns the number of ranks sharing.
+   * on one rank alone (piece 0 of 1) shares nothing. Returns the number of ranks sharing. A
+   * filter run inside another shares as the outer request's piece (ShareRanksLike).
    */
   int ShareCellSumsAcrossRanks(
     cvt::SharedCellSums* engine, bool ready, vtkInformationVector* outputVector);
@@ -187,6 +196,8 @@ protected:
   vtkTimeStamp LastFailure; // when the last failed run ended (see FailPipelineOnError)
   bool LastRunFailed = false;
   bool RanksStopTogether = false; // see ShareCellSumsAcrossRanks
+  int OuterPiece = 0;             // see ShareRanksLike; OuterPieces 0: none
+  int OuterPieces = 0;
   bool AnyRankAborted = false;
 
 private:

@@ -215,6 +215,9 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
   vtkCVTSurfaceEngine* engine = this->GetOpenGLEngine<vtkCVTSurfaceEngine>();
   const bool ready = engine->SetGeometryImage(image);
   this->ContextDescription = engine->GetContextDescription();
+  // Under MPI, ranks on the CPU engine share their work only if every rank does; this one
+  // computes alone.
+  const int ranks = this->ShareCellSumsAcrossRanks(nullptr, false, outputVector);
   cvt::GeometryImageProblem surface(*engine, image);
   cvt::OptimizerResult result;
   std::string error;
@@ -238,6 +241,7 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
   AddRunFields(fields, result, surface.GradientNorm(result.Sums));
   cvtvtk::AddFieldString(fields, "Engine", "OpenGL");
   cvtvtk::AddFieldString(fields, "EngineReason", reason);
+  cvtvtk::AddFieldValue(fields, "EngineRanks", ranks); // 1: the OpenGL engine shares nothing
 
   vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
   labelsOut->ShallowCopy(input);
@@ -281,6 +285,8 @@ bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage
   vtkNew<vtkCVTRemeshFilter> remesher;
   remesher->SetInputData(mesh);
   remesher->CopyOptimizerSettings(this);
+  // Under MPI the ranks share its clipping of the triangles; the outputs are split below.
+  remesher->ShareRanksLike(outputVector->GetInformationObject(0));
   // Its errors become ours; its progress is ours, and our abort stops it.
   struct Relay
   {

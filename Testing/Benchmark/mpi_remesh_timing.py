@@ -2,7 +2,8 @@
 
     [mpiexec -n N] pvbatch Testing/Benchmark/mpi_remesh_timing.py PLUGIN MESH [SITES]
 
-MESH: any mesh ParaView reads (.obj .stl .ply .vtp ...); SITES (default 5000). Prints one line
+MESH: any mesh ParaView reads (.obj .stl .ply .vtp ...), or `torus` for CVT Surface on the CPU
+engine with the default torus geometry image (1024 x 512); SITES (default 5000). Prints one line
 with the number of ranks sharing the cell sums, the whole update's seconds, the optimisation's
 and the remesh's seconds (the filter's own clocks) and the energy. VTK_SMP_BACKEND_IN_USE=
 Sequential gives one thread per rank."""
@@ -15,9 +16,12 @@ from paraview.simple import LoadPlugin, OpenDataFile
 plugin, mesh = sys.argv[1], sys.argv[2]
 sites = int(sys.argv[3]) if len(sys.argv) > 3 else 5000
 LoadPlugin(plugin, remote=False, ns=globals())
-source = OpenDataFile(mesh)
-source.UpdatePipeline()
-remesh = CVTRemesh(Input=source, NumberOfSites=sites)
+if mesh == "torus":
+    remesh = CVTSurface(Input=CVTGeometryImage(), NumberOfSites=sites, Engine="CPU")
+else:
+    source = OpenDataFile(mesh)
+    source.UpdatePipeline()
+    remesh = CVTRemesh(Input=source, NumberOfSites=sites)
 start = time.time()
 remesh.UpdatePipeline()
 update = time.time() - start

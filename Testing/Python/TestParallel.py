@@ -4,7 +4,7 @@ Every rank runs the same CVT and keeps its share of each output, so the pieces t
 each site, triangle and history row once, and the same numbers as one process computing alone
 (the filters run here in this process, through the Python modules, as the reference). On the
 CPU engine the ranks share the cell integrals: of the image's cells, of the input mesh's
-triangles for the remesh."""
+triangles for the remesh and of the geometry image's triangles for CVT Surface."""
 import sys
 
 from paraview import servermanager
@@ -12,7 +12,8 @@ from paraview.simple import LoadPlugin, Sphere, Wavelet
 
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkFiltersSources import vtkSphereSource
-from cvt.cvtFilters import vtkCVTImageFilter, vtkCVTRemeshFilter
+from cvt.cvtFilters import (vtkCVTGeometryImageSource, vtkCVTImageFilter, vtkCVTRemeshFilter,
+                            vtkCVTSurfaceFilter)
 
 failures = []
 
@@ -45,6 +46,24 @@ def site_ids(proxy):
     data = servermanager.Fetch(proxy)  # all ranks' pieces of port 0, appended
     ids = data.GetPointData().GetArray("SiteId")
     return [int(ids.GetValue(i)) for i in range(ids.GetNumberOfTuples())]
+
+
+def check_shared_remesh(what, proxy, alone, sites, ranks):
+    """Sites and remesh triangles once in all pieces, and cell sums shared by all ranks: each
+    clips its share of the triangles and the sums are added across ranks, in another order than
+    one process adds them (the last bits differ, not the result)."""
+    check_same(what + ": sites", counts(proxy, 0)[0], sites)
+    ids = site_ids(proxy)
+    check(what + ": each site once", sorted(ids) == list(range(sites)))
+    check_same(what + ": remesh triangles", counts(proxy, 2)[1],
+               alone.GetRemeshOutput().GetNumberOfCells())
+    fields = servermanager.Fetch(proxy).GetFieldData()
+    shared = fields.GetArray("EngineRanks").GetValue(0)
+    check("%s: cell sums shared by %d ranks" % (what, shared), shared == ranks)
+    energy = fields.GetArray("Energy").GetValue(0)
+    reference = alone.GetSitesOutput().GetFieldData().GetArray("Energy").GetValue(0)
+    check("%s: energy %.17g (alone %.17g)" % (what, energy, reference),
+          abs(energy - reference) <= 1e-9 * abs(reference))
 
 
 def main(argv):
@@ -90,22 +109,21 @@ def main(argv):
     sphere.SetThetaResolution(40)
     sphere.SetPhiResolution(40)
     alone = run_alone(vtkCVTRemeshFilter(), sphere, 200)
-    check_same("remesh: sites", counts(remesh, 0)[0], 200)
-    ids = site_ids(remesh)
-    check("remesh: each site once", sorted(ids) == list(range(200)))
-    check_same("remesh: triangles", counts(remesh, 2)[1], alone.GetRemeshOutput().GetNumberOfCells())
+    check_shared_remesh("remesh", remesh, alone, 200, ranks)
     check_same("remesh: labelled input triangles", counts(remesh, 1)[1],
                alone.GetLabelsOutput().GetNumberOfCells())
-    # The ranks share the clipping of the input's triangles: each sums its share of them, and
-    # the sums are added across ranks, in another order than one process adds them (the last
-    # bits differ, not the result).
-    fields = servermanager.Fetch(remesh).GetFieldData()
-    shared = fields.GetArray("EngineRanks").GetValue(0)
-    check("remesh: cell sums shared by %d ranks" % shared, shared == ranks)
-    energy = fields.GetArray("Energy").GetValue(0)
-    reference = alone.GetSitesOutput().GetFieldData().GetArray("Energy").GetValue(0)
-    check("remesh: energy %.17g (alone %.17g)" % (energy, reference),
-          abs(energy - reference) <= 1e-9 * abs(reference))
+
+    # CVT Surface on the CPU engine: a remesh of the geometry image's triangles inside the filter,
+    # whose ranks share the clipping as CVT Remesh's do.
+    surface = CVTSurface(Input=CVTGeometryImage(Resolution=[128, 64]), NumberOfSites=200,
+                         MaximumNumberOfIterations=10, Engine="CPU")
+    surface.UpdatePipeline()
+    torus = vtkCVTGeometryImageSource()
+    torus.SetResolution(128, 64)
+    alone = vtkCVTSurfaceFilter()
+    alone.SetEngineToCPU()
+    run_alone(alone, torus, 200)
+    check_shared_remesh("surface", surface, alone, 200, ranks)
 
     print("parallel: %s" % ("ok" if not failures else "FAILED (%d)" % len(failures)))
 
