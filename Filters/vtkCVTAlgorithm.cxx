@@ -39,10 +39,10 @@ void vtkCVTAlgorithm::CopyOptimizerSettings(vtkCVTAlgorithm* other)
 void vtkCVTAlgorithm::ShareRanksLike(vtkInformation* outerRequest)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  const bool piece = outerRequest && outerRequest->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
+  const bool asksPiece = outerRequest && outerRequest->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
     outerRequest->Has(SDDP::UPDATE_PIECE_NUMBER());
-  this->OuterPiece = piece ? outerRequest->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
-  this->OuterPieces = piece ? outerRequest->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) : 0;
+  this->OuterPiece = asksPiece ? outerRequest->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+  this->OuterPieces = asksPiece ? outerRequest->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) : 0;
 }
 
 //------------------------------------------------------------------------------

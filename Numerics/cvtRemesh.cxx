@@ -1062,38 +1062,36 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
 {
   std::vector<int> dualOf;
   Remesh remesh = ConnectRemesh(dual, inputBoundaryLoops, maximumHole, dualOf);
+  // Shaping: flips, moves and collapses for wider triangles (they keep the topology).
+  std::vector<char> pinned(remesh.SiteIds.size());
+  for (size_t v = 0; v < pinned.size(); ++v)
   {
-    std::vector<char> pinned(remesh.SiteIds.size());
-    for (size_t v = 0; v < pinned.size(); ++v)
+    pinned[v] = dual.Pinned[static_cast<size_t>(dualOf[v])];
+  }
+  remesh.FlippedEdges = FlipThinTriangles(remesh.Points, pinned, remesh.Triangles);
+  remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles);
+  // Most remeshes have no thin triangle left: look before building the input's k-d tree.
+  const bool anyThin = std::any_of(remesh.Triangles.begin(), remesh.Triangles.end(),
+    [&remesh](const std::array<int, 3>& t)
     {
-      pinned[v] = dual.Pinned[static_cast<size_t>(dualOf[v])];
-    }
-    remesh.FlippedEdges = FlipThinTriangles(remesh.Points, pinned, remesh.Triangles);
-    remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles);
-    // Most remeshes have no thin triangle left: look before building the input's k-d tree.
-    const bool anyThin = std::any_of(remesh.Triangles.begin(), remesh.Triangles.end(),
-      [&remesh](const std::array<int, 3>& t)
-      {
-        return SmallestCorner(&remesh.Points[3 * t[0]], &remesh.Points[3 * t[1]],
-                 &remesh.Points[3 * t[2]]) < ThinCorner;
-      });
-    if (surface && anyThin)
+      return SmallestCorner(&remesh.Points[3 * t[0]], &remesh.Points[3 * t[1]],
+               &remesh.Points[3 * t[2]]) < ThinCorner;
+    });
+  if (surface && anyThin)
+  {
+    const SurfaceProjector projector(*surface);
+    remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, projector, false);
+    remesh.CollapsedEdges = CollapseThinTriangles(remesh, pinned, projector);
+    if (remesh.CollapsedEdges > 0)
     {
-      const SurfaceProjector projector(*surface);
-      remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, projector, false);
-      remesh.CollapsedEdges = CollapseThinTriangles(remesh, pinned, projector);
-      if (remesh.CollapsedEdges > 0)
-      {
-        // The triangles a collapse widened may now flip or move to wider ones still.
-        remesh.FlippedEdges +=
-          FlipThinTriangles(remesh.Points, pinned, remesh.Triangles, ThinCorner);
-        remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, false);
-        DropUnusedVertices(remesh);
-      }
-      // Last, the thin triangles that neither mended: their free vertices search around them
-      // (after the collapses, which mend needles and caps better than any move).
-      remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, true);
+      // The triangles a collapse widened may now flip or move to wider ones still.
+      remesh.FlippedEdges += FlipThinTriangles(remesh.Points, pinned, remesh.Triangles, ThinCorner);
+      remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, false);
+      DropUnusedVertices(remesh);
     }
+    // Last, the thin triangles that neither mended: their free vertices search around them
+    // (after the collapses, which mend needles and caps better than any move).
+    remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, true);
   }
   SplitPinchedVertices(remesh);
   remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);
