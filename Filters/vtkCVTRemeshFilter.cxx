@@ -53,11 +53,10 @@ int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
 /// A remesh and how it came about.
 struct TopologyRefinement
 {
-  cvt::RestrictedDual Dual; // of the sites of the remesh
-  cvt::Remesh Remesh;
-  cvt::MeshTopology Topology;
+  cvt::RestrictedDual Dual;   // of the sites of the remesh (ThinParts: what the remesh loses)
+  cvt::Remesh Remesh;         // built from Dual at the end
+  cvt::MeshTopology Topology; // the remesh's
   int Mismatch = std::numeric_limits<int>::max(); // TopologyMismatch against the input's
-  int ThinParts = 0; // cell parts round thin parts the remesh loses (RestrictedDual::ThinParts)
   int AddedSites = 0;
 };
 
@@ -91,16 +90,13 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
     bool gain = dual.ThinParts < fewestThinParts;
     fewestThinParts = std::min(fewestThinParts, dual.ThinParts);
     // With the input's topology reached, only fewer thin parts can do better.
-    if (best.Mismatch != 0 || dual.ThinParts < best.ThinParts)
+    if (best.Mismatch != 0 || dual.ThinParts < best.Dual.ThinParts)
     {
-      const cvt::MeshTopology topology = cvt::RemeshTopology(dual, input.Loops.size());
-      const int mismatch = TopologyMismatch(topology, input);
-      if (mismatch < best.Mismatch || (mismatch == 0 && dual.ThinParts < best.ThinParts))
+      const int mismatch = TopologyMismatch(cvt::RemeshTopology(dual, input.Loops.size()), input);
+      if (mismatch < best.Mismatch || (mismatch == 0 && dual.ThinParts < best.Dual.ThinParts))
       {
         best.Dual = std::move(dual);
-        best.Topology = topology;
         best.Mismatch = mismatch;
-        best.ThinParts = best.Dual.ThinParts;
         best.AddedSites = static_cast<int>(added);
         gain = true;
       }
@@ -119,7 +115,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
   }
   // Thin parts alone are worth rounds while they become fewer, not the second count.
   const auto worthAnotherRound = [&]()
-  { return best.Mismatch != 0 || (best.ThinParts != 0 && roundsWithoutGain < 2); };
+  { return best.Mismatch != 0 || (best.Dual.ThinParts != 0 && roundsWithoutGain < 2); };
   for (int settleIterations : TopologyRoundIterations)
   {
     if (settleIterations != TopologyRoundIterations[0] && best.Mismatch == 0)
