@@ -128,9 +128,9 @@ public:
 
   /**
    * For a filter that runs this one inside its own request under MPI: share the cell sums
-   * across the ranks as if this filter's request asked for the outer request's piece `piece`
-   * of `pieces` (see ShareCellSumsAcrossRanks), while its own outputs stay whole (the outer
-   * filter keeps its share of its own). Take it from the outer request's output information.
+   * across the ranks as if this filter's request asked for the piece that `outerRequest` (the
+   * outer filter's output information) asks for (see ShareCellSumsAcrossRanks), while its own
+   * outputs stay whole (the outer filter keeps its share of its own).
    */
   void ShareRanksLike(vtkInformation* outerRequest);
 
