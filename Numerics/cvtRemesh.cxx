@@ -325,6 +325,24 @@ private:
   PointTree<3> Tree;
 };
 
+/// Per vertex of `remesh`: whether it ends an edge with one triangle (the remesh's border).
+std::vector<char> BorderVertices(const Remesh& remesh)
+{
+  std::vector<char> onBorder(remesh.SiteIds.size(), 0);
+  const EdgeTable edges(remesh.Triangles);
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
+  {
+    if (edges.Edge(e).size() == 1)
+    {
+      const EdgeUse& use = *edges.Edge(e).begin();
+      const std::array<int, 3>& t = remesh.Triangles[static_cast<size_t>(use.Triangle)];
+      onBorder[static_cast<size_t>(t[use.Local])] =
+        onBorder[static_cast<size_t>(t[(use.Local + 1) % 3])] = 1;
+    }
+  }
+  return onBorder;
+}
+
 /// Moves free (not pinned) vertices of triangles with a corner under 30 degrees to the mean of
 /// their neighbours, projected onto the input surface, wherever that raises the smallest angle
 /// around them without turning a triangle over: cells cut by a crease leave a few thin
@@ -493,24 +511,13 @@ int CollapseThinTriangles(
 {
   const size_t vertices = remesh.SiteIds.size();
   std::vector<std::vector<int>> around(vertices); // incident triangles, dead ones included
-  std::vector<char> alive(remesh.Triangles.size(), 1), onBorder(vertices, 0);
+  std::vector<char> alive(remesh.Triangles.size(), 1);
+  const std::vector<char> onBorder = BorderVertices(remesh);
   for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
   {
     for (int v : remesh.Triangles[t])
     {
       around[static_cast<size_t>(v)].push_back(t);
-    }
-  }
-  // Border vertices: the ends of edges with one triangle.
-  const EdgeTable edges(remesh.Triangles);
-  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
-  {
-    if (edges.Edge(e).size() == 1)
-    {
-      const EdgeUse& use = *edges.Edge(e).begin();
-      const std::array<int, 3>& t = remesh.Triangles[static_cast<size_t>(use.Triangle)];
-      onBorder[static_cast<size_t>(t[use.Local])] =
-        onBorder[static_cast<size_t>(t[(use.Local + 1) % 3])] = 1;
     }
   }
   const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
@@ -694,8 +701,9 @@ int CollapseThinTriangles(
   return collapsed;
 }
 
-/// Drops the vertices in no triangle (collapsed ones) and numbers the others in order.
-void DropUnusedVertices(Remesh& remesh)
+/// Drops the vertices in no triangle (collapsed ones) and numbers the others in order, in
+/// `pinned` too.
+void DropUnusedVertices(Remesh& remesh, std::vector<char>& pinned)
 {
   std::vector<int> renumbered(remesh.SiteIds.size(), -1);
   for (const auto& t : remesh.Triangles)
@@ -719,11 +727,13 @@ void DropUnusedVertices(Remesh& remesh)
       &remesh.SourceBarycentric[3 * to]);
     remesh.SourceTriangles[to] = remesh.SourceTriangles[v];
     remesh.SiteIds[to] = remesh.SiteIds[v];
+    pinned[to] = pinned[v];
   }
   remesh.Points.resize(3 * static_cast<size_t>(next));
   remesh.SourceBarycentric.resize(3 * static_cast<size_t>(next));
   remesh.SourceTriangles.resize(static_cast<size_t>(next));
   remesh.SiteIds.resize(static_cast<size_t>(next));
+  pinned.resize(static_cast<size_t>(next));
   for (auto& t : remesh.Triangles)
   {
     for (int& v : t)
@@ -1087,11 +1097,18 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       // The triangles a collapse widened may now flip or move to wider ones still.
       remesh.FlippedEdges += FlipThinTriangles(remesh.Points, pinned, remesh.Triangles, ThinCorner);
       remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, false);
-      DropUnusedVertices(remesh);
+      DropUnusedVertices(remesh, pinned);
     }
-    // Last, the thin triangles that neither mended: their free vertices search around them
-    // (after the collapses, which mend needles and caps better than any move).
-    remesh.MovedVertices += RelaxThinTriangles(remesh, pinned, projector, true);
+    // Last, the thin triangles that neither mended search around their vertices (after the
+    // collapses, which mend needles and caps better than any move): the free ones and, as a
+    // last resort, those pinned to creases (the move keeps its triangles as close to the
+    // input); those on the border stay on it.
+    std::vector<char> onPinnedBorder = BorderVertices(remesh);
+    for (size_t v = 0; v < pinned.size(); ++v)
+    {
+      onPinnedBorder[v] = onPinnedBorder[v] && pinned[v];
+    }
+    remesh.MovedVertices += RelaxThinTriangles(remesh, onPinnedBorder, projector, true);
   }
   SplitPinchedVertices(remesh);
   remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);

@@ -42,7 +42,8 @@ struct Remesh
 /// Given the input `surface`, free vertices of triangles with a corner under 30 degrees are then
 /// moved along it where that widens them, and where that is not enough an edge of theirs is
 /// collapsed (the remesh then has a vertex fewer) if that widens the triangles around it; the
-/// free vertices of thin triangles left then search the surface around them for wider places.
+/// vertices of thin triangles left, free or pinned to a crease (not to the border), then search
+/// the surface around them for wider places.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 

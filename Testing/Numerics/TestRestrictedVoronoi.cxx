@@ -223,6 +223,46 @@ cvt::RestrictedDual DualAt(const std::vector<std::array<double, 3>>& points, boo
   return dual;
 }
 
+/// The triangles of a 5 x 5 grid of dual vertices (vertex 5 j + i at (i, j)), two per square;
+/// with `doubled`, that vertex stands for vertex 2 as the lower-left corner of square (2, 0)
+/// (the middle of the bottom side doubled), and their needle triangle with vertex 7 is added.
+void AddGridTriangles(cvt::RestrictedDual& dual, int doubled = -1)
+{
+  for (int j = 0; j < 4; ++j)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      const int a = 5 * j + i;
+      const int lowerLeft = (doubled >= 0 && i == 2 && j == 0) ? doubled : a;
+      dual.Triangles.push_back({ lowerLeft, a + 1, a + 6 });
+      dual.Triangles.push_back({ lowerLeft, a + 6, a + 5 });
+    }
+  }
+  if (doubled >= 0)
+  {
+    dual.Triangles.push_back({ 2, doubled, 7 }); // the needle
+  }
+}
+
+/// A 5 x 5 grid (vertex 5 j + i) with its border pinned at (i, j) and its nine inner points
+/// jittered: one of the random grids where moves to the neighbours' mean stop at a 25-degree
+/// corner and no collapse helps.
+void JitteredGrid(std::vector<std::array<double, 3>>& points, std::vector<char>& pinned)
+{
+  const double inner[9][2] = { { 1.26, 1.05 }, { 2.17, 0.87 }, { 3.26, 0.73 }, { 1.07, 2.29 },
+    { 1.90, 1.86 }, { 3.19, 1.76 }, { 0.75, 2.85 }, { 1.88, 3.05 }, { 3.17, 3.29 } };
+  for (int j = 0, k = 0; j < 5; ++j)
+  {
+    for (int i = 0; i < 5; ++i)
+    {
+      const bool border = i == 0 || i == 4 || j == 0 || j == 4;
+      points.push_back({ border ? i : inner[k][0], border ? j : inner[k][1], 0.0 });
+      k += border ? 0 : 1;
+      pinned.push_back(border);
+    }
+  }
+}
+
 /// 2D sites (x, y) as 3D points at z = 0.
 std::vector<double> AtZeroHeight(const std::vector<double>& xy)
 {
@@ -743,9 +783,7 @@ TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
   {
     dual.Triangles.push_back({ 0, 1 + k, 1 + (k + 1) % 6 });
   }
-  cvt::SurfaceMesh plane;
-  plane.Points = { -2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0 };
-  plane.Triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+  const cvt::SurfaceMesh plane = FlatSquare(1, -2.0, 2.0);
   const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
   const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
   EXPECT_EQ(before.MovedVertices, 0);
@@ -776,37 +814,16 @@ TEST(RestrictedVoronoi, RemeshSearchesAroundFreeVerticesWhereTheMeanDoesNotWiden
   // of the random grids where moves to the neighbours' mean stop at a 25-degree corner and no
   // collapse helps). Searching around the free vertices of the thin triangles left widens them
   // past 30 degrees, with no vertex lost.
-  const double inner[9][2] = { { 1.26, 1.05 }, { 2.17, 0.87 }, { 3.26, 0.73 }, { 1.07, 2.29 },
-    { 1.90, 1.86 }, { 3.19, 1.76 }, { 0.75, 2.85 }, { 1.88, 3.05 }, { 3.17, 3.29 } };
   std::vector<std::array<double, 3>> points;
   std::vector<char> pinned;
-  for (int j = 0, k = 0; j < 5; ++j)
-  {
-    for (int i = 0; i < 5; ++i)
-    {
-      const bool border = i == 0 || i == 4 || j == 0 || j == 4;
-      points.push_back({ border ? i : inner[k][0], border ? j : inner[k][1], 0.0 });
-      k += border ? 0 : 1;
-      pinned.push_back(border);
-    }
-  }
+  JitteredGrid(points, pinned);
   cvt::RestrictedDual dual = DualAt(points, false, pinned);
   for (int i = 0; i < 25; ++i)
   {
     dual.OnBoundary[i] = pinned[i];
   }
-  for (int j = 0; j < 4; ++j)
-  {
-    for (int i = 0; i < 4; ++i)
-    {
-      const int a = 5 * j + i;
-      dual.Triangles.push_back({ a, a + 1, a + 6 });
-      dual.Triangles.push_back({ a, a + 6, a + 5 });
-    }
-  }
-  cvt::SurfaceMesh plane;
-  plane.Points = { -3, -3, 0, 7, -3, 0, 7, 7, 0, -3, 7, 0 };
-  plane.Triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+  AddGridTriangles(dual);
+  const cvt::SurfaceMesh plane = FlatSquare(1, -3.0, 7.0);
   const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
   const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
   const double widthBefore = cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle;
@@ -845,21 +862,8 @@ TEST(RestrictedVoronoi, RemeshCollapsesEdgesThatNoFlipOrMoveMends)
   pinned.push_back(1);
   cvt::RestrictedDual dual = DualAt(points, false, pinned);
   dual.OnBoundary.assign(pinned.begin(), pinned.end());
-  const auto at = [](int i, int j) { return 5 * j + i; };
-  for (int j = 0; j < 4; ++j)
-  {
-    for (int i = 0; i < 4; ++i)
-    {
-      // The square right of the double starts at vertex 25.
-      const int lowerLeft = (i == 2 && j == 0) ? 25 : at(i, j);
-      dual.Triangles.push_back({ lowerLeft, at(i + 1, j), at(i + 1, j + 1) });
-      dual.Triangles.push_back({ lowerLeft, at(i + 1, j + 1), at(i, j + 1) });
-    }
-  }
-  dual.Triangles.push_back({ 2, 25, at(2, 1) }); // the needle
-  cvt::SurfaceMesh plane;
-  plane.Points = { -2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0 };
-  plane.Triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+  AddGridTriangles(dual, 25); // the square right of the double starts at vertex 25
+  const cvt::SurfaceMesh plane = FlatSquare(1, -2.0, 2.0);
 
   const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
   EXPECT_EQ(before.CollapsedEdges, 0);
@@ -887,6 +891,83 @@ TEST(RestrictedVoronoi, RemeshCollapsesEdgesThatNoFlipOrMoveMends)
     }
   }
   EXPECT_EQ(doubled, 1);
+}
+
+TEST(RestrictedVoronoi, RemeshSearchesAfterACollapseWithItsVerticesRenumbered)
+{
+  // The jittered grid of RemeshSearchesAroundFreeVerticesWhereTheMeanDoesNotWiden with the
+  // middle of its bottom side doubled, as in RemeshCollapsesEdgesThatNoFlipOrMoveMends: the
+  // collapse drops a vertex and numbers the others anew, and the search that follows must know
+  // which of them are pinned under their new numbers (with the old ones it left a corner of 25
+  // degrees, a free vertex taken for a pinned one).
+  std::vector<std::array<double, 3>> points;
+  std::vector<char> pinned;
+  JitteredGrid(points, pinned);
+  points[2] = { 1.98, 0.0, 0.0 };
+  points.push_back({ 2.02, 0.0, 0.0 }); // vertex 25, the double of vertex 2
+  pinned.push_back(1);
+  cvt::RestrictedDual dual = DualAt(points, false, pinned);
+  dual.OnBoundary.assign(pinned.begin(), pinned.end());
+  AddGridTriangles(dual, 25);
+  const cvt::SurfaceMesh plane = FlatSquare(1, -3.0, 7.0);
+
+  const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
+  EXPECT_EQ(after.CollapsedEdges, 1);
+  EXPECT_EQ(after.SiteIds.size(), 25u);
+  EXPECT_GT(cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle, 30.0);
+  for (size_t v = 0; v < after.SiteIds.size(); ++v)
+  {
+    const double x = after.Points[3 * v], y = after.Points[3 * v + 1];
+    if (pinned[static_cast<size_t>(after.SiteIds[v])])
+    {
+      EXPECT_EQ(std::min({ x, 4.0 - x, y, 4.0 - y }), 0.0) << "border site " << after.SiteIds[v];
+    }
+  }
+}
+
+TEST(RestrictedVoronoi, RemeshSearchMovesCreaseVerticesButNotBorderOnes)
+{
+  // A 5 x 5 grid on the plane z = 0 whose vertices are all pinned: the border's to the border,
+  // the inner ones as if to creases. The middle one sits close to the one below it, so their
+  // triangles are thin. No vertex is free: the last search moves the crease vertex (its
+  // triangles stay on the input), never one on the border.
+  std::vector<std::array<double, 3>> points;
+  for (int j = 0; j < 5; ++j)
+  {
+    for (int i = 0; i < 5; ++i)
+    {
+      points.push_back({ static_cast<double>(i), static_cast<double>(j), 0.0 });
+    }
+  }
+  points[12] = { 2.0, 1.2, 0.0 };
+  const std::vector<char> pinned(25, 1);
+  cvt::RestrictedDual dual = DualAt(points, false, pinned);
+  AddGridTriangles(dual);
+  const auto onBorder = [](int v) { return v % 5 == 0 || v % 5 == 4 || v / 5 == 0 || v / 5 == 4; };
+  for (int v = 0; v < 25; ++v)
+  {
+    dual.OnBoundary[v] = onBorder(v);
+  }
+  const cvt::SurfaceMesh plane = FlatSquare(1, -3.0, 7.0);
+  const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
+  const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
+  const double widthBefore = cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle;
+  const double widthAfter = cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle;
+  EXPECT_LT(widthBefore, 25.0);
+  EXPECT_GT(widthAfter, 30.0);
+  for (size_t v = 0; v < after.SiteIds.size(); ++v)
+  {
+    const double x = after.Points[3 * v], y = after.Points[3 * v + 1];
+    const int site = after.SiteIds[v];
+    EXPECT_EQ(after.Points[3 * v + 2], 0.0); // on the surface
+    if (onBorder(site))
+    {
+      EXPECT_EQ(x, points[site][0]);
+      EXPECT_EQ(y, points[site][1]);
+    }
+  }
+  std::cout << "[ measured ] smallest angle " << widthBefore << " -> " << widthAfter << " degrees, "
+            << after.MovedVertices << " moves, " << after.FlippedEdges << " flips\n";
 }
 
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
