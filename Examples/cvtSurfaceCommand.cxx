@@ -119,7 +119,8 @@ int RunRemesh(const Options& options)
               << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
               << "  input topology              " << topology(sites, "Input") << "\n"
               << "  remesh topology             " << topology(remesh, "") << "\n"
-              << "  sites added for topology    " << Field(sites, "AddedSites") << "\n"
+              << "  sites added for topology    " << Field(sites, "AddedSites") << " (in "
+              << Field(sites, "TopologyRounds") << " rounds)\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "

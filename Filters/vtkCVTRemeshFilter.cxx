@@ -41,6 +41,10 @@ namespace
 /// them again: turbine); where that fails, more spread crowded added sites (spider's legs).
 constexpr int MaximumTopologyRounds = 8;
 constexpr int TopologyRoundIterations[] = { 3, 10 };
+/// Rounds in a row without gain after which a pass gives up while the topology differs. Gains
+/// came after up to 4 such rounds (boeing, spider); holes and handles far smaller than the
+/// cells (ChineseDragon's missing triangles, femur's tunnels) never gain and cost all 16 rounds.
+constexpr int MaximumRoundsWithoutGain = 5;
 
 /// How far a remesh's topology is from the input's: 0 when the same.
 int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
@@ -58,13 +62,16 @@ struct TopologyRefinement
   cvt::MeshTopology Topology; // the remesh's
   int Mismatch = std::numeric_limits<int>::max(); // TopologyMismatch against the input's
   int AddedSites = 0;
+  int Rounds = 0; // of added sites, all passes
 };
 
 /// The remesh of `sites`, and while its topology is not the input's or cells wrap round thin
 /// parts it loses (a tail, a leg: RestrictedDual::ThinParts), that of `sites` with sites added
 /// where the dual asks for them (RestrictedDual::SplitPoints), in rounds settled by
-/// TopologyRoundIterations[0] Lloyd iterations each; if the topology still differs, again from
-/// `sites` with the next count. Thin parts alone get rounds while they become fewer. Returns
+/// TopologyRoundIterations[0] Lloyd iterations each; if the topology still differs but came
+/// closer, again from `sites` with the next count. A pass gives up after
+/// MaximumRoundsWithoutGain rounds without gain; thin parts alone get rounds while they become
+/// fewer. Returns
 /// the remesh with the input's topology and fewest thin parts, else the first of the closest
 /// topology, in `best`; false (and `error`) when the engine fails.
 bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
@@ -115,13 +122,20 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
   }
   // Thin parts alone are worth rounds while they become fewer, not the second count.
   const auto worthAnotherRound = [&]()
-  { return best.Mismatch != 0 || (best.Dual.ThinParts != 0 && roundsWithoutGain < 2); };
+  {
+    return best.Mismatch != 0 ? roundsWithoutGain < MaximumRoundsWithoutGain
+                              : best.Dual.ThinParts != 0 && roundsWithoutGain < 2;
+  };
+  const int firstMismatch = best.Mismatch;
   for (int settleIterations : TopologyRoundIterations)
   {
-    if (settleIterations != TopologyRoundIterations[0] && best.Mismatch == 0)
+    // The next count is for added sites that got closer to the topology but stayed crowded.
+    if (settleIterations != TopologyRoundIterations[0] &&
+      (best.Mismatch == 0 || best.Mismatch == firstMismatch))
     {
       break;
     }
+    roundsWithoutGain = 0;
     cvt::OptimizerResult refined; // the sites of the remesh: the CVT's, then those added
     refined.Sites = sites;
     std::vector<double> splitPoints = firstSplitPoints;
@@ -138,6 +152,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
         error = "the surface CVT failed: " + (error.empty() ? engine.GetLastError() : error);
         return false;
       }
+      ++best.Rounds;
       if (!consider((refined.Sites.size() - sites.size()) / 3, splitPoints))
       {
         return false;
@@ -464,6 +479,7 @@ bool vtkCVTRemeshFilter::Compute(
       vtkSMPTools::GetBackend() + ")");
   AddTopology(fields, "Input", inputTopology);
   cvtvtk::AddFieldValue(fields, "AddedSites", best.AddedSites);
+  cvtvtk::AddFieldValue(fields, "TopologyRounds", best.Rounds);
   cvtvtk::AddFieldValue(fields, "EngineRanks", ranks); // ranks sharing the cell sums
 
   FillRemesh(remeshOut, remesh, mesh, labelsOut->GetPointData(), remeshTopology, inputTopology);

@@ -13,6 +13,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFlyingEdges3D.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkLinearSubdivisionFilter.h"
 #include "vtkNew.h"
@@ -276,6 +277,69 @@ TEST(RemeshFilter, ThinTailIsKeptWithAddedSites)
   const double tip = bounds[1];
   run.Remesh()->GetBounds(bounds);
   EXPECT_GT(bounds[1], tip - 0.2) << "the tail's tip is at x = " << tip;
+}
+
+TEST(RemeshFilter, HoleFarSmallerThanTheCellsEndsTheRoundsEarly)
+{
+  // A sphere with a triangular hole 20 times smaller than its triangles (about 0.006 across)
+  // remeshed with 100 sites (cells about 0.35 across): added sites cannot keep such a hole, so
+  // the rounds stop when they stop gaining (5 rounds), not after all 16, and the warning says
+  // the topology differs.
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(sphere->GetPoints());
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkIdList> ids;
+  const vtkIdType holed = sphere->GetNumberOfPolys() / 2;
+  for (vtkIdType c = 0; c < sphere->GetNumberOfPolys(); ++c)
+  {
+    sphere->GetCellPoints(c, ids);
+    if (c != holed)
+    {
+      triangles->InsertNextCell(ids);
+      continue;
+    }
+    // The hole: the triangle shrunk to 5% about its centroid; a ring of 6 triangles round it.
+    const vtkIdType outer[3] = { ids->GetId(0), ids->GetId(1), ids->GetId(2) };
+    double corners[3][3], centroid[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      points->GetPoint(outer[k], corners[k]);
+      for (int d = 0; d < 3; ++d)
+      {
+        centroid[d] += corners[k][d] / 3;
+      }
+    }
+    vtkIdType inner[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      double x[3];
+      for (int d = 0; d < 3; ++d)
+      {
+        x[d] = centroid[d] + 0.05 * (corners[k][d] - centroid[d]);
+      }
+      inner[k] = points->InsertNextPoint(x);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const int next = (k + 1) % 3;
+      const vtkIdType first[3] = { outer[k], outer[next], inner[next] },
+                      second[3] = { outer[k], inner[next], inner[k] };
+      triangles->InsertNextCell(3, first);
+      triangles->InsertNextCell(3, second);
+    }
+  }
+  vtkNew<vtkPolyData> input;
+  input->SetPoints(points);
+  input->SetPolys(triangles);
+  RemeshRun run(input, 100, 40);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  EXPECT_EQ(Field(run.Remesh(), "InputBoundaryLoops"), 1);
+  EXPECT_EQ(Field(run.Remesh(), "BoundaryLoops"), 0);
+  EXPECT_NE(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_EQ(Field(sites, "AddedSites"), 0);
+  EXPECT_EQ(Field(sites, "TopologyRounds"), 5);
 }
 
 TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)
