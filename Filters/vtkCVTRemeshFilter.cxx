@@ -71,9 +71,8 @@ struct TopologyRefinement
 /// TopologyRoundIterations[0] Lloyd iterations each; if the topology still differs but came
 /// closer, again from `sites` with the next count. A pass gives up after
 /// MaximumRoundsWithoutGain rounds without gain; thin parts alone get rounds while they become
-/// fewer. Returns
-/// the remesh with the input's topology and fewest thin parts, else the first of the closest
-/// topology, in `best`; false (and `error`) when the engine fails.
+/// fewer. Returns the remesh with the input's topology and fewest thin parts, else the first of
+/// the closest topology, in `best`; false (and `error`) when the engine fails.
 bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
   const cvt::MeshTopology& input, const std::vector<double>& sites,
   const std::function<bool()>& aborted, TopologyRefinement& best, std::string& error)
@@ -449,8 +448,9 @@ bool vtkCVTRemeshFilter::Compute(
   // the triangles that would keep what they wrap. There the remesh gets more vertices: sites
   // are added that cut such parts into disks and a few Lloyd iterations settle them, until
   // the restricted cells have the closed-ball property (the restricted Delaunay triangulation
-  // then has the surface's topology) or the rounds run out; then once more with longer
-  // settling. The CVT's own sites, the output, stay as optimised.
+  // then has the surface's topology) or the rounds run out or stop gaining; then, if they
+  // came closer, once more with longer settling. The CVT's own sites, the output, stay as
+  // optimised.
   // The remesh kept has the input's topology and the fewest such parts, else the closest
   // topology.
   TopologyRefinement best;
