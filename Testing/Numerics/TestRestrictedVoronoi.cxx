@@ -25,6 +25,12 @@
 
 namespace
 {
+/// The smallest corner of a remesh's triangles, in degrees.
+double SmallestAngle(const cvt::Remesh& remesh)
+{
+  return cvt::MeasureMesh(remesh.Points, remesh.Triangles).MinimumAngle;
+}
+
 /// The square [lo, hi]^2 at z = 0 as an n x n grid of quads, two triangles each.
 cvt::SurfaceMesh FlatSquare(int n, double lo, double hi)
 {
@@ -711,8 +717,7 @@ TEST(RestrictedVoronoi, RemeshFlipsTowardsValenceSix)
     {
       EXPECT_EQ(interior, (std::map<int, int>{ { 6, 16 } }));
     }
-    EXPECT_NEAR(
-      cvt::MeasureMesh(remesh.Points, remesh.Triangles).MinimumAngle, 45.0, lift > 0 ? 5.0 : 1e-9);
+    EXPECT_NEAR(SmallestAngle(remesh), 45.0, lift > 0 ? 5.0 : 1e-9);
   }
 }
 
@@ -788,8 +793,8 @@ TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
   const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
   EXPECT_EQ(before.MovedVertices, 0);
   EXPECT_EQ(after.MovedVertices, 1);
-  EXPECT_LT(cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle, 10.0);
-  EXPECT_GT(cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle, 55.0);
+  EXPECT_LT(SmallestAngle(before), 10.0);
+  EXPECT_GT(SmallestAngle(after), 55.0);
 
   const int centre = static_cast<int>(
     std::find(after.SiteIds.begin(), after.SiteIds.end(), 0) - after.SiteIds.begin());
@@ -826,8 +831,8 @@ TEST(RestrictedVoronoi, RemeshSearchesAroundFreeVerticesWhereTheMeanDoesNotWiden
   const cvt::SurfaceMesh plane = FlatSquare(1, -3.0, 7.0);
   const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
   const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
-  const double widthBefore = cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle;
-  const double widthAfter = cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle;
+  const double widthBefore = SmallestAngle(before);
+  const double widthAfter = SmallestAngle(after);
   EXPECT_LT(widthBefore, 25.0);
   EXPECT_EQ(after.CollapsedEdges, 0);
   EXPECT_EQ(after.SiteIds.size(), 25u);
@@ -867,14 +872,14 @@ TEST(RestrictedVoronoi, RemeshCollapsesEdgesThatNoFlipOrMoveMends)
 
   const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
   EXPECT_EQ(before.CollapsedEdges, 0);
-  EXPECT_LT(cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle, 5.0);
+  EXPECT_LT(SmallestAngle(before), 5.0);
 
   const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
   EXPECT_EQ(after.CollapsedEdges, 1);
   EXPECT_EQ(after.SiteIds.size(), 25u); // one vertex fewer, and none left in no triangle
   EXPECT_EQ(after.Points.size(), 3 * after.SiteIds.size());
   EXPECT_EQ(after.Triangles.size(), 32u);
-  EXPECT_GT(cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle, 40.0);
+  EXPECT_GT(SmallestAngle(after), 40.0);
   const cvt::MeshTopology topology =
     cvt::ComputeMeshTopology(static_cast<int>(after.SiteIds.size()), after.Triangles);
   EXPECT_EQ(topology.Components, 1);
@@ -914,7 +919,7 @@ TEST(RestrictedVoronoi, RemeshSearchesAfterACollapseWithItsVerticesRenumbered)
   const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
   EXPECT_EQ(after.CollapsedEdges, 1);
   EXPECT_EQ(after.SiteIds.size(), 25u);
-  EXPECT_GT(cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle, 30.0);
+  EXPECT_GT(SmallestAngle(after), 30.0);
   for (size_t v = 0; v < after.SiteIds.size(); ++v)
   {
     const double x = after.Points[3 * v], y = after.Points[3 * v + 1];
@@ -951,8 +956,8 @@ TEST(RestrictedVoronoi, RemeshSearchMovesCreaseVerticesButNotBorderOnes)
   const cvt::SurfaceMesh plane = FlatSquare(1, -3.0, 7.0);
   const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
   const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
-  const double widthBefore = cvt::MeasureMesh(before.Points, before.Triangles).MinimumAngle;
-  const double widthAfter = cvt::MeasureMesh(after.Points, after.Triangles).MinimumAngle;
+  const double widthBefore = SmallestAngle(before);
+  const double widthAfter = SmallestAngle(after);
   EXPECT_LT(widthBefore, 25.0);
   EXPECT_GT(widthAfter, 30.0);
   for (size_t v = 0; v < after.SiteIds.size(); ++v)
