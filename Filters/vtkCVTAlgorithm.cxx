@@ -9,7 +9,6 @@
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 
 #include <vector>
@@ -38,11 +37,10 @@ void vtkCVTAlgorithm::CopyOptimizerSettings(vtkCVTAlgorithm* other)
 //------------------------------------------------------------------------------
 void vtkCVTAlgorithm::ShareRanksLike(vtkInformation* outerRequest)
 {
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  const bool asksPiece = outerRequest && outerRequest->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
-    outerRequest->Has(SDDP::UPDATE_PIECE_NUMBER());
-  this->OuterPiece = asksPiece ? outerRequest->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
-  this->OuterPieces = asksPiece ? outerRequest->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) : 0;
+  int piece, pieces;
+  const bool asksPiece = cvtvtk::RequestedPiece(outerRequest, piece, pieces);
+  this->OuterPiece = asksPiece ? piece : 0;
+  this->OuterPieces = asksPiece ? pieces : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -116,20 +114,12 @@ bool vtkCVTAlgorithm::StopRequested() const
 int vtkCVTAlgorithm::ShareCellSumsAcrossRanks(
   cvt::SharedCellSums* engine, bool ready, vtkInformationVector* outputVector)
 {
-  using SDDP = vtkStreamingDemandDrivenPipeline;
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
-  vtkInformation* info = outputVector->GetInformationObject(0);
-  int piece = 0, pieces = 1;
-  if (this->OuterPieces > 0)
+  int piece = this->OuterPiece, pieces = this->OuterPieces;
+  if (pieces == 0)
   {
-    piece = this->OuterPiece;
-    pieces = this->OuterPieces;
-  }
-  else if (info->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) && info->Has(SDDP::UPDATE_PIECE_NUMBER()))
-  {
-    piece = info->Get(SDDP::UPDATE_PIECE_NUMBER());
-    pieces = info->Get(SDDP::UPDATE_NUMBER_OF_PIECES());
+    cvtvtk::RequestedPiece(outputVector->GetInformationObject(0), piece, pieces);
   }
   const bool allRanksRun = ranks > 1 && pieces == ranks && piece == controller->GetLocalProcessId();
   int canShare = engine && ready ? 1 : 0;

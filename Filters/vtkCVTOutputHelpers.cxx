@@ -145,6 +145,16 @@ void DescribeLabelsLikeInput(vtkInformation* inputInformation, vtkInformation* l
   }
 }
 
+bool RequestedPiece(vtkInformation* info, int& piece, int& pieces)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const bool asks =
+    info && info->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) && info->Has(SDDP::UPDATE_PIECE_NUMBER());
+  piece = asks ? info->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+  pieces = asks ? info->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) : 1;
+  return asks;
+}
+
 void ShareRequestedPiece(vtkInformation* request, vtkInformationVector* outputs)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
@@ -152,13 +162,11 @@ void ShareRequestedPiece(vtkInformation* request, vtkInformationVector* outputs)
     ? request->Get(vtkExecutive::FROM_OUTPUT_PORT())
     : 0;
   vtkInformation* asked = outputs->GetInformationObject(std::max(from, 0));
-  if (!asked || !asked->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) ||
-    !asked->Has(SDDP::UPDATE_PIECE_NUMBER()))
+  int piece, pieces;
+  if (!RequestedPiece(asked, piece, pieces))
   {
     return;
   }
-  const int piece = asked->Get(SDDP::UPDATE_PIECE_NUMBER());
-  const int pieces = asked->Get(SDDP::UPDATE_NUMBER_OF_PIECES());
   for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
   {
     vtkInformation* info = outputs->GetInformationObject(port);

@@ -60,6 +60,10 @@ void DescribeLabelsLikeInput(vtkInformation* inputInformation, vtkInformation* l
 /// Every pixel or triangle takes part in every cell, so under MPI each rank reads it all.
 void RequestAllOfInput(vtkInformation* inputInformation);
 
+/// The piece an output's information asks for (UPDATE_PIECE_NUMBER of
+/// UPDATE_NUMBER_OF_PIECES); false, and piece 0 of 1, when it asks for none.
+bool RequestedPiece(vtkInformation* info, int& piece, int& pieces);
+
 /// In RequestUpdateExtent: gives every output port the piece the request's port asks for (under
 /// MPI, rank r of N asks one port for piece r of N; the others would get the whole outputs and
 /// run the filter again when they are asked in turn).
