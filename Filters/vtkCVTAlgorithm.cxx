@@ -122,12 +122,15 @@ int vtkCVTAlgorithm::ShareCellSumsAcrossRanks(
     cvtvtk::RequestedPiece(outputVector->GetInformationObject(0), piece, pieces);
   }
   const bool allRanksRun = ranks > 1 && pieces == ranks && piece == controller->GetLocalProcessId();
-  int canShare = engine && ready ? 1 : 0;
+  // The ranks share only if every one is ready and splits the work the same way: the smallest
+  // and largest split agree and are not 0.
+  const int split = engine && ready ? static_cast<int>(engine->GetWorkSplit()) : 0;
+  bool canShare = split != 0;
   if (allRanksRun)
   {
-    int everyRank = 0;
-    canShare =
-      controller->AllReduce(&canShare, &everyRank, 1, vtkCommunicator::MIN_OP) && everyRank == 1;
+    int mine[2] = { split, -split }, everyRank[2] = { 0, 0 };
+    canShare = controller->AllReduce(mine, everyRank, 2, vtkCommunicator::MIN_OP) &&
+      everyRank[0] != 0 && everyRank[0] == -everyRank[1];
   }
   if (!allRanksRun || !canShare)
   {

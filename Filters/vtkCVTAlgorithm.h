@@ -169,12 +169,13 @@ protected:
    * ranks (every rank then runs the same request), makes the ranks share `engine`'s cell sums:
    * each computes its share of the work and the sums are added across ranks
    * (vtkMultiProcessController::AllReduce) before every optimiser step. Every rank of such a
-   * request must call it, with a null `engine` if it runs another engine and `ready` false if
-   * its engine failed to set up: the ranks share only when all of them can, and otherwise each
-   * computes alone. While they share, they stop together: each reduction carries the ranks'
-   * AbortExecute, and an abort asked on one rank stops all of them at the same step (a rank
-   * that stopped alone would leave the others waiting in the next reduction). A filter updated
-   * on one rank alone (piece 0 of 1) shares nothing. Returns the number of ranks sharing. A
+   * request must call it, with a null `engine` if its engine cannot share and `ready` false if
+   * its engine failed to set up: the ranks share only when all of them can and their engines
+   * split the work the same way (cvt::SharedCellSums::Split; not a CPU rank with an OpenGL
+   * one), and otherwise each computes alone. While they share, they stop together: each reduction
+   * carries the ranks' AbortExecute, and an abort asked on one rank stops all of them at the same
+   * step (a rank that stopped alone would leave the others waiting in the next reduction). A filter
+   * updated on one rank alone (piece 0 of 1) shares nothing. Returns the number of ranks sharing. A
    * filter run inside another shares as the outer request's piece (ShareRanksLike).
    */
   int ShareCellSumsAcrossRanks(

@@ -272,9 +272,10 @@ bool vtkCVTImageFilter::Compute(
     gpu->SetSplitBoundaryPixels(this->SplitBoundaryPixels);
   }
   const bool ready = engine->SetDomain(grid, density);
-  // Under MPI every rank runs the same optimisation; on the CPU they share its integrals (the
-  // OpenGL engine computes all of them on every rank).
-  const int ranks = this->ShareCellSumsAcrossRanks(gpu ? nullptr : &cpu, ready, outputVector);
+  // Under MPI every rank runs the same optimisation and they share its integrals: on the CPU
+  // each integrates its share of the cells, on OpenGL its band of rows.
+  cvt::SharedCellSums* shared = gpu ? static_cast<cvt::SharedCellSums*>(gpu) : &cpu;
+  const int ranks = this->ShareCellSumsAcrossRanks(shared, ready, outputVector);
   if (gpu)
   {
     this->ContextDescription = gpu->GetContextDescription();

@@ -215,9 +215,9 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
   vtkCVTSurfaceEngine* engine = this->GetOpenGLEngine<vtkCVTSurfaceEngine>();
   const bool ready = engine->SetGeometryImage(image);
   this->ContextDescription = engine->GetContextDescription();
-  // Under MPI, ranks on the CPU engine share their work only if every rank does; this one
-  // computes alone.
-  const int ranks = this->ShareCellSumsAcrossRanks(nullptr, false, outputVector);
+  // Under MPI the ranks share the reductions (each its band of the image's rows) if every rank
+  // runs this engine.
+  const int ranks = this->ShareCellSumsAcrossRanks(engine, ready, outputVector);
   cvt::GeometryImageProblem surface(*engine, image);
   cvt::OptimizerResult result;
   std::string error;
@@ -241,7 +241,7 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
   AddRunFields(fields, result, surface.GradientNorm(result.Sums));
   cvtvtk::AddFieldString(fields, "Engine", "OpenGL");
   cvtvtk::AddFieldString(fields, "EngineReason", reason);
-  cvtvtk::AddFieldValue(fields, "EngineRanks", ranks); // 1: the OpenGL engine shares nothing
+  cvtvtk::AddFieldValue(fields, "EngineRanks", ranks); // ranks sharing the cell sums
 
   vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
   labelsOut->ShallowCopy(input);

@@ -109,6 +109,20 @@ protected:
 class CVTNUMERICS_EXPORT SharedCellSums
 {
 public:
+  /// How an engine splits its work between the parts: parts can share only if they all split
+  /// it the same way.
+  enum class Split
+  {
+    Cells = 1,          // each part integrates the cells of its share of the sites
+    TriangleBlocks = 2, // each part clips its share of the mesh's triangles
+    ImageRows = 3       // each part reduces its band of the image's rows
+  };
+  explicit SharedCellSums(Split split)
+    : WorkSplit(split)
+  {
+  }
+  Split GetWorkSplit() const { return this->WorkSplit; }
+
   /// This process computes part `part` of `parts`; `sumAcrossParts` adds all parts' packed sums
   /// in place (every array of CellSums one after the other; false if that failed). One part
   /// (the default) shares nothing.
@@ -149,9 +163,49 @@ protected:
     return true;
   }
 
+  /// Every part's `values` (the same count from each), one part after the other in part order:
+  /// each puts its own in its place among zeros and the exchange adds them. False if it failed.
+  bool GatherAcrossParts(std::vector<double>& values) const
+  {
+    if (this->Parts <= 1)
+    {
+      return true;
+    }
+    const size_t count = values.size();
+    std::vector<double> all(count * static_cast<size_t>(this->Parts), 0.0);
+    std::copy(
+      values.begin(), values.end(), all.begin() + static_cast<std::ptrdiff_t>(count * this->Part));
+    if (!this->Exchange(all) || all.size() != count * static_cast<size_t>(this->Parts))
+    {
+      return false;
+    }
+    values.swap(all);
+    return true;
+  }
+
+  /// The largest `value` of all parts; false if the exchange failed.
+  bool MaximumAcrossParts(double& value) const
+  {
+    std::vector<double> values{ value };
+    if (!this->GatherAcrossParts(values))
+    {
+      return false;
+    }
+    value = *std::max_element(values.begin(), values.end());
+    return true;
+  }
+
+  /// This part's share [first, last) of `count` items (rows of an image, blocks of triangles).
+  void PartRange(int count, int& first, int& last) const
+  {
+    first = static_cast<int>(static_cast<long long>(count) * this->Part / this->Parts);
+    last = static_cast<int>(static_cast<long long>(count) * (this->Part + 1) / this->Parts);
+  }
+
   int Part = 0, Parts = 1;
 
 private:
+  Split WorkSplit;
   std::function<bool(std::vector<double>&)> Exchange;
 };
 

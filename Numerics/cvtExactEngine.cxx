@@ -10,6 +10,7 @@ namespace cvt
 {
 
 ExactEngine::ExactEngine()
+  : SharedCellSums(Split::Cells)
 {
   UseThreads();
 }
@@ -61,10 +62,10 @@ bool ExactEngine::ComputeCellSums(CellSums& sums)
   {
     return this->Fail("SetSites must succeed before ComputeCellSums");
   }
-  const size_t n = this->Sites.size() / 2;
-  const size_t part = static_cast<size_t>(this->Part), parts = static_cast<size_t>(this->Parts);
-  this->LastSums = ExactCellSums(this->Domain, this->Sites, this->Density, this->Tables,
-    n * part / parts, n * (part + 1) / parts);
+  int first = 0, last = 0;
+  this->PartRange(static_cast<int>(this->Sites.size() / 2), first, last);
+  this->LastSums =
+    ExactCellSums(this->Domain, this->Sites, this->Density, this->Tables, first, last);
   if (!this->SumAcrossParts(this->LastSums))
   {
     return this->Fail("the cell sums of the other processes sharing the work did not arrive");

@@ -793,7 +793,8 @@ void RestrictedVoronoi::Internals::Sweep(bool dual, int firstBlock, int lastBloc
 
 //------------------------------------------------------------------------------
 RestrictedVoronoi::RestrictedVoronoi()
-  : Impl(new Internals)
+  : SharedCellSums(Split::TriangleBlocks)
+  , Impl(new Internals)
 {
   UseThreads();
 }
@@ -1103,8 +1104,8 @@ bool RestrictedVoronoi::ComputeCellSums(CellSums& sums)
   }
   // Under MPI this part clips its share of the blocks of triangles (each cell's pieces are
   // summed over all parts by SumAcrossParts).
-  const int firstBlock = d.BlockCount * this->Part / this->Parts;
-  const int lastBlock = d.BlockCount * (this->Part + 1) / this->Parts;
+  int firstBlock = 0, lastBlock = 0;
+  this->PartRange(d.BlockCount, firstBlock, lastBlock);
   d.Sweep(false, firstBlock, lastBlock);
   sums.Resize(d.Sites.size() / 3, true);
   for (int block = firstBlock; block < lastBlock; ++block)

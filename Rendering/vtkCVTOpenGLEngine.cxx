@@ -83,6 +83,7 @@ struct vtkCVTOpenGLEngine::Internals
 //------------------------------------------------------------------------------
 vtkCVTOpenGLEngine::vtkCVTOpenGLEngine()
   : vtkCVTGPUEngine(vtkCVTPlaneDistance)
+  , cvt::SharedCellSums(Split::ImageRows)
   , Internal(new Internals)
 {
 }
@@ -304,8 +305,9 @@ bool vtkCVTOpenGLEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
   }
   Internals& in = *this->Internal;
   std::vector<float> texels, radius;
-  in.Reduction.Read(this->Context->GetRenderWindow(), 0, texels);
-  in.Reduction.Read(this->Context->GetRenderWindow(), 1, radius);
+  vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
+  in.Reduction.Read(window, 0, texels);
+  in.Reduction.Read(window, 1, radius);
   const int n = in.Sites.GetNumberOfSites();
   sums.Resize(n);
   maximumRadius = 0.0;
@@ -316,6 +318,28 @@ bool vtkCVTOpenGLEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
     sums.MomentY[i] = texels[4 * i + 2];
     sums.Energy[i] = texels[4 * i + 3];
     maximumRadius = std::max(maximumRadius, static_cast<double>(radius[i]));
+  }
+  if (this->Parts > 1)
+  {
+    // This part reduced its band of rows: the whole sums and radius are those of all parts,
+    // and the Lloyd update reads the whole sums from the slots.
+    if (!this->SumAcrossParts(sums) || !this->MaximumAcrossParts(maximumRadius))
+    {
+      return this->Fail("the cell sums of the other processes sharing the work did not arrive");
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      texels[4 * i + 0] = static_cast<float>(sums.Mass[i]);
+      texels[4 * i + 1] = static_cast<float>(sums.MomentX[i]);
+      texels[4 * i + 2] = static_cast<float>(sums.MomentY[i]);
+      texels[4 * i + 3] = static_cast<float>(sums.Energy[i]);
+    }
+    const int* slots = in.Sites.GetSlotSize();
+    if (!AllocateFloatTexture(
+          in.Reduction.GetTexture(0), window, slots[0], slots[1], 4, texels.data()))
+    {
+      return this->Fail("the GPU could not take the shared cell sums back");
+    }
   }
   return this->CheckGLError("reading the reduction back");
 }
@@ -334,11 +358,27 @@ bool vtkCVTOpenGLEngine::ScatterToSlots()
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBox(state);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   state->PushFramebufferBindings();
+  // This part's band of rows (all of them with one part). Step 2 reads the pieces of the 3x3
+  // neighbourhood, so step 1 covers the band and one row on either side.
+  int firstRow = 0, lastRow = 0;
+  this->PartRange(this->GridSize[1], firstRow, lastRow);
+  const auto scissorRows = [&](int first, int last)
+  {
+    first = std::max(0, first);
+    last = std::min(this->GridSize[1], last);
+    state->vtkglScissor(0, first, this->GridSize[0], last - first);
+  };
+  if (this->Parts > 1)
+  {
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    scissorRows(firstRow - 1, lastRow + 1);
+  }
 
   // Step 1: split pixels between candidate sites (fragment pass over the grid).
   vtkShaderProgram* split = ReadyQuad(in.SplitQuad, window, vtkCVTSplitPixelsFS);
@@ -360,6 +400,7 @@ bool vtkCVTOpenGLEngine::ScatterToSlots()
   in.Density->Deactivate();
 
   // Step 2: every pixel collects the pieces its neighbours hand to its site.
+  scissorRows(firstRow, lastRow);
   vtkShaderProgram* collect = ReadyQuad(in.CollectQuad, window, vtkCVTCollectFS);
   if (!collect)
   {
@@ -401,7 +442,9 @@ bool vtkCVTOpenGLEngine::ScatterToSlots()
   reduce->SetUniform2f("metric", this->Metric);
   reduce->SetUniformf("radiusScale",
     static_cast<float>(1.0 / std::min(this->Grid.Spacing[0], this->Grid.Spacing[1])));
-  in.Reduction.Scatter(window, this->Grid.NumberOfPixels());
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  in.Reduction.Scatter(window, static_cast<vtkIdType>(firstRow) * this->GridSize[0],
+    static_cast<vtkIdType>(lastRow - firstRow) * this->GridSize[0]);
   collected->Deactivate();
   seeds->Deactivate();
   state->PopFramebufferBindings();

@@ -15,6 +15,10 @@
  *
  * The initial JFA step adapts to the sites' spacing (AdaptiveStep, see vtkCVTGPUEngine).
  *
+ * Under MPI (cvt::SharedCellSums::ShareWork) every part labels the whole grid but reduces only
+ * its band of rows; the sums and the largest cell radius are then combined across the parts,
+ * and the Lloyd update runs on the combined sums.
+ *
  * All work happens on the context of a vtkCVTOpenGLContext; the thread's previous context is
  * restored after every call.
  */
@@ -31,6 +35,7 @@
 class CVTRENDERING_EXPORT vtkCVTOpenGLEngine
   : public vtkCVTGPUEngine
   , public cvt::Engine
+  , public cvt::SharedCellSums
 {
 public:
   static vtkCVTOpenGLEngine* New();

@@ -61,7 +61,7 @@ bool vtkCVTSlotReduction::Allocate(vtkOpenGLRenderWindow* window, const int slot
 }
 
 //------------------------------------------------------------------------------
-void vtkCVTSlotReduction::Scatter(vtkOpenGLRenderWindow* window, vtkIdType points)
+void vtkCVTSlotReduction::Scatter(vtkOpenGLRenderWindow* window, vtkIdType first, vtkIdType count)
 {
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglViewport viewport(state);
@@ -90,7 +90,7 @@ void vtkCVTSlotReduction::Scatter(vtkOpenGLRenderWindow* window, vtkIdType point
     }
   }
   this->EmptyVertexArray->Bind();
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points));
+  glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count));
   this->EmptyVertexArray->Release();
   for (size_t t = 0; t < this->Targets.size(); ++t)
   {

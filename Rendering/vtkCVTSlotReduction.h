@@ -38,9 +38,10 @@ public:
   /// Targets of `slotSize` texels; storage follows sizes.
   bool Allocate(vtkOpenGLRenderWindow* window, const int slotSize[2]);
 
-  /// Clears the targets and draws `points` attribute-less points with the bound program into
-  /// them (the caller has set its uniforms and activated its textures).
-  void Scatter(vtkOpenGLRenderWindow* window, vtkIdType points);
+  /// Clears the targets and draws `count` attribute-less points, gl_VertexID from `first` on,
+  /// with the bound program into them (the caller has set its uniforms and activated its
+  /// textures).
+  void Scatter(vtkOpenGLRenderWindow* window, vtkIdType first, vtkIdType count);
 
   /// Target `target`'s texels: Components floats per slot, row after row.
   void Read(vtkOpenGLRenderWindow* window, int target, std::vector<float>& values);

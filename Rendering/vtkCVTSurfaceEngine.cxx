@@ -79,6 +79,7 @@ struct vtkCVTSurfaceEngine::Internals
 //------------------------------------------------------------------------------
 vtkCVTSurfaceEngine::vtkCVTSurfaceEngine()
   : vtkCVTGPUEngine(vtkCVTSurfaceDistance)
+  , cvt::SharedCellSums(Split::ImageRows)
   , Internal(new Internals)
 {
 }
@@ -326,7 +327,10 @@ bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
   reduce->SetUniform2i("gridSize", this->GridSize);
   reduce->SetUniform2i("slotSize", in.Sites.GetSlotSize());
   reduce->SetUniform2i("wrap", this->Wrap);
-  in.Reduction.Scatter(window, static_cast<vtkIdType>(this->GridSize[0]) * this->GridSize[1]);
+  int firstRow = 0, lastRow = 0;
+  this->PartRange(this->GridSize[1], firstRow, lastRow); // all rows with one part
+  in.Reduction.Scatter(window, static_cast<vtkIdType>(firstRow) * this->GridSize[0],
+    static_cast<vtkIdType>(lastRow - firstRow) * this->GridSize[0]);
   in.Sites.GetCurrent()->Deactivate();
   in.Weights->Deactivate();
   in.Positions->Deactivate();
@@ -347,6 +351,10 @@ bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
     sums.MomentZ[i] = texels[4 * i + 3];
     sums.Energy[i] = energy[i];
     maximumRadius = std::max(maximumRadius, static_cast<double>(radius[i]));
+  }
+  if (!this->SumAcrossParts(sums) || !this->MaximumAcrossParts(maximumRadius))
+  {
+    return this->Fail("the cell sums of the other processes sharing the work did not arrive");
   }
   return this->CheckGLError("surface reduction");
 }
@@ -415,7 +423,8 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
       return false;
     }
     cvt::NearestPointsInCells(this->Image, labels, targets, sites, pixels);
-    return true;
+    // Of the whole image: nearest of all under MPI too (parts on EGL contexts take part).
+    return this->NearestAcrossParts(targets, std::vector<char>(n, 1), sites, pixels);
   }
   ScopedContext current(this->Context);
   vtkOpenGLRenderWindow* window = this->Context->GetRenderWindow();
@@ -465,7 +474,15 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   nearest->SetUniform2i("gridSize", this->GridSize);
   nearest->SetUniform2i("slotSize", slotSize);
   nearest->SetUniform2i("wrap", this->Wrap);
+  // This part's band of rows (all of them with one part).
+  int firstRow = 0, lastRow = 0;
+  this->PartRange(this->GridSize[1], firstRow, lastRow);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBox(state);
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglScissor(0, firstRow, this->GridSize[0], lastRow - firstRow);
   in.NearestQuad->Render();
+  state->vtkglDisable(GL_SCISSOR_TEST);
   in.Targets.GetCurrent()->Deactivate();
   in.Positions->Deactivate();
 
@@ -482,7 +499,7 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   scatter->SetUniform2i("slotSize", slotSize);
   scatter->SetUniformf("maximumDistance", static_cast<float>(2.0 * this->Diagonal));
   in.EmptyVertexArray->Bind();
-  glDrawArrays(GL_POINTS, 0, this->GridSize[0] * this->GridSize[1]);
+  glDrawArrays(GL_POINTS, firstRow * this->GridSize[0], (lastRow - firstRow) * this->GridSize[0]);
   in.EmptyVertexArray->Release();
   in.NearestCorners->Deactivate();
   in.NearestPoints->Deactivate();
@@ -491,19 +508,72 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
 
   std::vector<float> texels(static_cast<size_t>(slotSize[0]) * slotSize[1] * 4);
   ReadTarget(in.NearestFramebuffer, window, 0, slotSize[0], slotSize[1], GL_RGBA, texels.data());
+  std::vector<char> found(n, 0);
   for (int i = 0; i < n; ++i)
   {
     if (texels[4 * i + 3] < 0.0f)
     {
-      continue; // an empty cell: the site stays
+      continue; // an empty cell (in this part's rows): the site stays
     }
     for (int c = 0; c < 3; ++c)
     {
       sites[3 * i + c] = texels[4 * i + c];
     }
     pixels[i] = static_cast<long long>(texels[4 * i + 3]);
+    found[i] = 1;
   }
-  return this->CheckGLError("constrained centroids");
+  return this->CheckGLError("constrained centroids") &&
+    this->NearestAcrossParts(targets, found, sites, pixels);
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceEngine::NearestAcrossParts(const std::vector<double>& targets,
+  const std::vector<char>& found, std::vector<double>& sites, std::vector<long long>& pixels)
+{
+  if (this->Parts <= 1)
+  {
+    return true;
+  }
+  // Per site: distance to the target (-1: no candidate), point, pixel.
+  const size_t n = pixels.size();
+  std::vector<double> candidates(5 * n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    double* c = &candidates[5 * i];
+    double distance2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      c[1 + k] = sites[3 * i + k];
+      distance2 +=
+        (sites[3 * i + k] - targets[3 * i + k]) * (sites[3 * i + k] - targets[3 * i + k]);
+    }
+    c[0] = found[i] ? std::sqrt(distance2) : -1.0;
+    c[4] = static_cast<double>(pixels[i]);
+  }
+  if (!this->GatherAcrossParts(candidates))
+  {
+    return this->Fail("the constrained centroids of the other processes did not arrive");
+  }
+  for (size_t i = 0; i < n; ++i)
+  {
+    // The nearest; on a tie the first part's (lower rows, as one process's depth test keeps the
+    // first point drawn).
+    const double* best = nullptr;
+    for (int part = 0; part < this->Parts; ++part)
+    {
+      const double* c = &candidates[5 * (static_cast<size_t>(part) * n + i)];
+      if (c[0] >= 0.0 && (!best || c[0] < best[0]))
+      {
+        best = c;
+      }
+    }
+    if (best)
+    {
+      std::copy(best + 1, best + 4, sites.begin() + static_cast<std::ptrdiff_t>(3 * i));
+      pixels[i] = static_cast<long long>(best[4]);
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

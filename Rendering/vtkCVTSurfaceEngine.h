@@ -10,10 +10,15 @@
  * several parts of the image is summed as one. The optimisers (constrained centroids,
  * tangential gradients, projection) run on the CPU side of the seam. The initial JFA step
  * adapts to the sites' spacing in pixels (AdaptiveStep, see vtkCVTGPUEngine).
+ *
+ * Under MPI (cvt::SharedCellSums::ShareWork) every part labels the whole image but reduces,
+ * and looks for constrained centroids in, only its band of rows; the parts' sums are added, the
+ * nearest of their centroid candidates kept.
  */
 #ifndef vtkCVTSurfaceEngine_h
 #define vtkCVTSurfaceEngine_h
 
+#include "cvtEngine.h"          // for cvt::SharedCellSums
 #include "cvtRenderingModule.h" // for export macro
 #include "cvtSurface.h"         // for cvt::SurfaceEngine
 #include "vtkCVTGPUEngine.h"
@@ -24,6 +29,7 @@
 class CVTRENDERING_EXPORT vtkCVTSurfaceEngine
   : public vtkCVTGPUEngine
   , public cvt::SurfaceEngine
+  , public cvt::SharedCellSums
 {
 public:
   static vtkCVTSurfaceEngine* New();
@@ -56,6 +62,10 @@ private:
 
   bool CheckGLError(const char* where);
   bool AttachNearestTargets(int width, int height);
+  /** Keeps, for every site, the nearest of all parts' candidates (sites, pixels) to its target;
+   * `found` tells which of this part's are candidates. */
+  bool NearestAcrossParts(const std::vector<double>& targets, const std::vector<char>& found,
+    std::vector<double>& sites, std::vector<long long>& pixels);
 
   cvt::GeometryImage Image; // for the CPU fallback of NearestPointsInCells
   int GridSize[2] = { 0, 0 };
