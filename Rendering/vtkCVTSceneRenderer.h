@@ -1,10 +1,11 @@
 /**
  * @class   vtkCVTSceneRenderer
- * @brief   Offscreen picture of a CVT result: cells coloured by site, sites drawn on top.
+ * @brief   Pictures of CVT results: cells coloured by site with sites on top, and remeshes.
  *
- * Renders with VTK's own OpenGL renderer on the headless context of vtkCVTOpenGLContext, so
- * no display is needed. Cell colours come from a seeded table, so a result always gives the
- * same picture.
+ * Render draws a 2D result on the CPU (no OpenGL needed, the same pixels on every machine);
+ * RenderMesh renders a surface with VTK's own OpenGL renderer on the headless context of
+ * vtkCVTOpenGLContext, so no display is needed. Colours come from seeded tables, so a result
+ * always gives the same picture.
  */
 #ifndef vtkCVTSceneRenderer_h
 #define vtkCVTSceneRenderer_h
@@ -47,7 +48,9 @@ public:
 
   /**
    * Render `labels` (a 2D image with an int SiteId point array) and `sites` (vertices) into an
-   * RGB image. Returns nullptr with a message in GetLastError() when there is no context.
+   * RGB image, each picture pixel coloured by the label under its centre, the sites as dots of
+   * PointSize pixels. Needs no OpenGL. Returns nullptr with a message in GetLastError() when
+   * the labels have no SiteId array.
    *
    * The picture belongs to this renderer and is replaced by its next Render or RenderMesh
    * (hold it in a vtkSmartPointer, or in Python a variable, to keep it). A plain pointer, not

@@ -83,6 +83,8 @@ if ! CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --resolution 16 --sites
   echo "Auto did not fall back to the CPU without OpenGL:"; cat "$T/log"; bad=1
 elif ! grep -q "engine: CPU (Auto: no OpenGL context" "$T/log"; then
   echo "Auto's choice without OpenGL was not reported:"; cat "$T/log"; bad=1
+elif [ ! -s "$T/out/cvt.png" ] || grep -q "cvt.png not written" "$T/log"; then
+  echo "the 2D picture (drawn on the CPU) was not written without OpenGL:"; cat "$T/log"; bad=1
 fi
 if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --engine opengl --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
   echo "ran without an OpenGL context"; bad=1

@@ -1,18 +1,23 @@
-// Offscreen regression image: a small CVT rendered headless against a baseline in Data/.
+// Regression images: a small CVT drawn against a baseline in Data/, and a picture checked pixel
+// by pixel.
 // Set CVT_UPDATE_BASELINES=1 to rewrite the baseline after an intended change.
 #include "vtkCVTImageFilter.h"
 #include "vtkCVTSceneRenderer.h"
 
 #include "vtkImageData.h"
 #include "vtkImageDifference.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -66,4 +71,61 @@ TEST(RegressionImage, RenderedCVTMatchesTheBaseline)
   std::cout << "[ measured ] thresholded image error: " << difference->GetThresholdedError()
             << "\n";
   EXPECT_LT(difference->GetThresholdedError(), 10.0);
+}
+
+// The picture against what it must show, pixel by pixel: each cell pixel the colour of the
+// label under it (black for no site), one colour per label, the sites as dark round dots.
+TEST(RegressionImage, PictureShowsLabelsAndSites)
+{
+  vtkNew<vtkImageData> labels; // 4 x 2 labels of 1 x 1, each drawn as 16 x 16 picture pixels
+  labels->SetDimensions(4, 2, 1);
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("SiteId");
+  for (int id : { 0, 1, 2, 3, 4, 5, 6, -1 })
+  {
+    ids->InsertNextValue(id);
+  }
+  labels->GetPointData()->AddArray(ids);
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.0, 0.0, 0.0); // the centre of label 0: picture pixel (8, 8)
+  vtkNew<vtkPolyData> sites;
+  sites->SetPoints(points);
+
+  vtkNew<vtkCVTSceneRenderer> scene;
+  scene->SetSize(64);
+  vtkSmartPointer<vtkImageData> picture = scene->Render(labels, sites);
+  ASSERT_NE(picture, nullptr) << scene->GetLastError();
+  int dims[3];
+  picture->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 64);
+  ASSERT_EQ(dims[1], 32);
+  auto pixel = [&picture](int x, int y)
+  {
+    const auto* rgb = static_cast<unsigned char*>(picture->GetScalarPointer(x, y, 0));
+    return std::array<int, 3>{ rgb[0], rgb[1], rgb[2] };
+  };
+  EXPECT_EQ(pixel(2, 2), pixel(14, 14));                     // label 0, away from the dot
+  EXPECT_NE(pixel(2, 2), pixel(20, 2));                      // label 1
+  EXPECT_EQ(pixel(20, 2), pixel(31, 15));                    // label 1 throughout
+  EXPECT_NE(pixel(20, 2), pixel(20, 20));                    // label 5 above it
+  EXPECT_EQ(pixel(56, 24), (std::array<int, 3>{ 0, 0, 0 })); // no site
+  int dark = 0;
+  for (int y = 0; y < 16; ++y)
+  {
+    for (int x = 0; x < 16; ++x)
+    {
+      const auto c = pixel(x, y);
+      dark += c[0] < 64 && c[1] < 64 && c[2] < 64;
+    }
+  }
+  EXPECT_LT(pixel(8, 8)[0], 32);
+  EXPECT_GE(dark, 9); // a dot 4 pixels across covers about 12.6 pixels
+  EXPECT_LE(dark, 16);
+
+  scene->ShowCellsOff(); // stippling: white, the dot alone
+  picture = scene->Render(labels, sites);
+  ASSERT_NE(picture, nullptr);
+  EXPECT_EQ(pixel(2, 2), (std::array<int, 3>{ 255, 255, 255 }));
+  EXPECT_EQ(pixel(56, 24), (std::array<int, 3>{ 255, 255, 255 }));
+  EXPECT_LT(pixel(8, 8)[0], 32);
 }
