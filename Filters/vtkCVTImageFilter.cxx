@@ -32,6 +32,8 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkCVTImageFilter);
 
@@ -46,20 +48,48 @@ vtkSmartPointer<vtkCellArray> DualTriangles(vtkPolyData* sites, const cvt::Grid&
   {
     return triangles;
   }
-  vtkNew<vtkDelaunay2D> delaunay;
-  delaunay->SetInputData(sites);
-  delaunay->Update();
-  vtkPolyData* mesh = delaunay->GetOutput();
+  // vtkDelaunay2D walks from the last triangle to each new point: points fed in a serpentine
+  // order of row bands keep the walks short (1000 sites: 21 -> 8 ms, 100,000: 19 -> 1.1 s).
   vtkPoints* points = sites->GetPoints();
+  const vtkIdType n = points->GetNumberOfPoints();
+  double bounds[6];
+  points->GetBounds(bounds);
+  const double bands = std::max(1.0, std::floor(std::sqrt(0.5 * n)));
+  const double bandHeight = std::max(bounds[3] - bounds[2], 1e-300) / bands;
+  std::vector<vtkIdType> order(n);
+  std::vector<std::pair<double, double>> keys(n); // (band, x along the band's direction)
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    const double band = std::min(bands - 1.0, std::floor((p[1] - bounds[2]) / bandHeight));
+    keys[i] = { band, std::fmod(band, 2.0) == 0.0 ? p[0] : -p[0] };
+    order[i] = i;
+  }
+  std::sort(
+    order.begin(), order.end(), [&keys](vtkIdType a, vtkIdType b) { return keys[a] < keys[b]; });
+  vtkNew<vtkPoints> sorted;
+  sorted->SetDataTypeToDouble();
+  sorted->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    sorted->SetPoint(i, points->GetPoint(order[i]));
+  }
+  vtkNew<vtkPolyData> input;
+  input->SetPoints(sorted);
+  vtkNew<vtkDelaunay2D> delaunay;
+  delaunay->SetInputData(input);
+  delaunay->Update();
   vtkIdType npts;
-  const vtkIdType* ids;
-  vtkCellArray* polys = mesh->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  const vtkIdType* sortedIds;
+  vtkCellArray* polys = delaunay->GetOutput()->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, sortedIds);)
   {
     if (npts != 3)
     {
       continue;
     }
+    const vtkIdType ids[3] = { order[sortedIds[0]], order[sortedIds[1]], order[sortedIds[2]] };
     double a[3], b[3], c[3];
     points->GetPoint(ids[0], a);
     points->GetPoint(ids[1], b);
