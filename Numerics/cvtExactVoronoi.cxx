@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace cvt
 {
@@ -40,12 +41,11 @@ PolygonIntegrals IntegrateVertices(const double* x, const double* y, size_t n, d
   return r;
 }
 
-Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c)
+void ClipPolygon(const Polygon& polygon, double a, double b, double c, Polygon& out)
 {
-  Polygon out;
+  out.X.clear(); // keeps the capacity: a caller clipping in a loop allocates once
+  out.Y.clear();
   const size_t n = polygon.Size();
-  out.X.reserve(n + 1); // a convex polygon gains at most one vertex
-  out.Y.reserve(n + 1);
   for (size_t k = 0; k < n; ++k)
   {
     const double x0 = polygon.X[k], y0 = polygon.Y[k];
@@ -63,6 +63,14 @@ Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c)
       out.Y.push_back(y0 + t * (y1 - y0));
     }
   }
+}
+
+Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c)
+{
+  Polygon out;
+  out.X.reserve(polygon.Size() + 1); // a convex polygon gains at most one vertex
+  out.Y.reserve(polygon.Size() + 1);
+  ClipPolygon(polygon, a, b, c, out);
   return out;
 }
 
@@ -74,6 +82,19 @@ Polygon Rectangle(double x0, double x1, double y0, double y1)
   p.X = { x0, x1, x1, x0 };
   p.Y = { y0, y0, y1, y1 };
   return p;
+}
+
+/// True when some vertex of the polygon has a x + b y > c (a clip would change it).
+bool Outside(const Polygon& polygon, double a, double b, double c)
+{
+  for (size_t k = 0; k < polygon.Size(); ++k)
+  {
+    if (a * polygon.X[k] + b * polygon.Y[k] - c > 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 double SquaredRadius(const Polygon& cell, double sx, double sy)
@@ -157,11 +178,13 @@ std::vector<Polygon> ClippedVoronoiCells(
     [&](vtkIdType begin, vtkIdType end)
     {
       std::vector<size_t> ring;
+      Polygon cell, clipped; // scratch, reused by every cell of this chunk
       for (vtkIdType i = begin; i < end; ++i)
       {
         const double sx = sites[2 * i], sy = sites[2 * i + 1];
         const int column = buckets.Column(sx), row = buckets.Row(sy);
-        Polygon cell = domain;
+        cell.X.assign(domain.X.begin(), domain.X.end());
+        cell.Y.assign(domain.Y.begin(), domain.Y.end());
         for (int r = 0; r < buckets.Count && cell.Size() > 0; ++r)
         {
           // Sites in ring r are at least (r - 1) bucket sides away; their bisectors miss the cell
@@ -179,15 +202,21 @@ std::vector<Polygon> ClippedVoronoiCells(
               continue;
             }
             const double dx = sites[2 * j] - sx, dy = sites[2 * j + 1] - sy;
-            // Keep x with (x - s_i) . d <= |d|^2 / 2.
-            cell = ClipPolygon(cell, dx, dy, dx * sx + dy * sy + 0.5 * (dx * dx + dy * dy));
+            // Keep x with (x - s_i) . d <= |d|^2 / 2; most bisectors of a ring miss the cell.
+            const double c = dx * sx + dy * sy + 0.5 * (dx * dx + dy * dy);
+            if (!Outside(cell, dx, dy, c))
+            {
+              continue;
+            }
+            ClipPolygon(cell, dx, dy, c, clipped);
+            std::swap(cell, clipped);
             if (cell.Size() == 0)
             {
               break;
             }
           }
         }
-        cells[i] = std::move(cell);
+        cells[i] = cell;
       }
     });
   return cells;

@@ -34,6 +34,9 @@ CVTNUMERICS_EXPORT PolygonIntegrals IntegrateVertices(
 
 /// Keeps the part of `polygon` where a x + b y <= c.
 CVTNUMERICS_EXPORT Polygon ClipPolygon(const Polygon& polygon, double a, double b, double c);
+/// The same into `out` (not `polygon`), reusing its storage.
+CVTNUMERICS_EXPORT void ClipPolygon(
+  const Polygon& polygon, double a, double b, double c, Polygon& out);
 
 /// The Voronoi cells of all sites (flat x, y) clipped to the grid's domain, one polygon each;
 /// only those of sites first to last - 1 when a range is given (the others stay empty).
