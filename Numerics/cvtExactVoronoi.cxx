@@ -120,10 +120,21 @@ public:
     this->Count = std::max(1, static_cast<int>(std::ceil(std::sqrt(n / 2.0))));
     this->Width = (grid.XMax() - grid.XMin()) / this->Count;
     this->Height = (grid.YMax() - grid.YMin()) / this->Count;
-    this->Bins.resize(static_cast<size_t>(this->Count) * this->Count);
+    // The sites sorted by bucket (a counting sort): two arrays, not one per bucket.
+    this->Start.assign(static_cast<size_t>(this->Count) * this->Count + 1, 0);
     for (size_t i = 0; i < n; ++i)
     {
-      this->Bins[this->Index(this->Column(sites[2 * i]), this->Row(sites[2 * i + 1]))].push_back(i);
+      ++this->Start[this->Index(this->Column(sites[2 * i]), this->Row(sites[2 * i + 1])) + 1];
+    }
+    for (size_t b = 1; b < this->Start.size(); ++b)
+    {
+      this->Start[b] += this->Start[b - 1];
+    }
+    this->Ids.resize(n);
+    std::vector<size_t> next(this->Start.begin(), this->Start.end() - 1);
+    for (size_t i = 0; i < n; ++i)
+    {
+      this->Ids[next[this->Index(this->Column(sites[2 * i]), this->Row(sites[2 * i + 1]))]++] = i;
     }
   }
   int Column(double x) const
@@ -151,8 +162,9 @@ public:
         const bool onRing = std::abs(r - row) == ring || std::abs(c - column) == ring;
         if (onRing && r >= 0 && c >= 0 && r < this->Count && c < this->Count)
         {
-          const auto& bin = this->Bins[this->Index(c, r)];
-          out.insert(out.end(), bin.begin(), bin.end());
+          const size_t b = this->Index(c, r);
+          out.insert(
+            out.end(), this->Ids.begin() + this->Start[b], this->Ids.begin() + this->Start[b + 1]);
         }
       }
     }
@@ -161,24 +173,24 @@ public:
   const Grid& Grid_;
   int Count = 1;
   double Width = 1.0, Height = 1.0;
-  std::vector<std::vector<size_t>> Bins;
+  std::vector<size_t> Start; // bucket b holds Ids[Start[b]] .. Ids[Start[b + 1] - 1]
+  std::vector<size_t> Ids;
 };
-}
 
-std::vector<Polygon> ClippedVoronoiCells(
-  const Grid& grid, const std::vector<double>& sites, size_t first, size_t last)
+/// Clips the Voronoi cell of each site first..last-1 to the grid's domain, in parallel, and
+/// hands it to `use(i, cell)`; the polygon is scratch, reused for the thread's next cell.
+template<typename Use>
+void ForEachClippedCell(
+  const Grid& grid, const std::vector<double>& sites, size_t first, size_t last, Use&& use)
 {
-  const size_t n = sites.size() / 2;
-  last = std::min(last, n);
   const Polygon domain = Rectangle(grid.XMin(), grid.XMax(), grid.YMin(), grid.YMax());
   const Buckets buckets(grid, sites);
   const double bucketSide = std::min(buckets.Width, buckets.Height);
-  std::vector<Polygon> cells(n);
   vtkSMPTools::For(static_cast<vtkIdType>(first), static_cast<vtkIdType>(std::max(first, last)), 64,
     [&](vtkIdType begin, vtkIdType end)
     {
       std::vector<size_t> ring;
-      Polygon cell, clipped; // scratch, reused by every cell of this chunk
+      Polygon cell, clipped;
       for (vtkIdType i = begin; i < end; ++i)
       {
         const double sx = sites[2 * i], sy = sites[2 * i + 1];
@@ -197,7 +209,7 @@ std::vector<Polygon> ClippedVoronoiCells(
           buckets.Ring(column, row, r, ring);
           for (size_t j : ring)
           {
-            if (j == i)
+            if (j == static_cast<size_t>(i))
             {
               continue;
             }
@@ -216,9 +228,19 @@ std::vector<Polygon> ClippedVoronoiCells(
             }
           }
         }
-        cells[i] = cell;
+        use(static_cast<size_t>(i), cell);
       }
     });
+}
+}
+
+std::vector<Polygon> ClippedVoronoiCells(
+  const Grid& grid, const std::vector<double>& sites, size_t first, size_t last)
+{
+  const size_t n = sites.size() / 2;
+  std::vector<Polygon> cells(n);
+  ForEachClippedCell(grid, sites, first, std::min(last, n),
+    [&cells](size_t i, const Polygon& cell) { cells[i] = cell; });
   return cells;
 }
 
@@ -426,36 +448,34 @@ CellSums ExactCellSums(const Grid& grid, const std::vector<double>& sites,
 {
   const size_t n = sites.size() / 2;
   last = std::min(last, n);
-  const std::vector<Polygon> cells = ClippedVoronoiCells(grid, sites, first, last);
   CellSums sums;
   sums.Resize(n);
-  vtkSMPTools::For(static_cast<vtkIdType>(first), static_cast<vtkIdType>(std::max(first, last)), 64,
-    [&](vtkIdType begin, vtkIdType end)
+  // Each cell is integrated as soon as it is clipped: no polygon is kept or copied.
+  ForEachClippedCell(grid, sites, first, last,
+    [&](size_t i, const Polygon& cell)
     {
-      for (vtkIdType i = begin; i < end; ++i)
+      if (cell.Size() < 3)
       {
-        const double sx = sites[2 * i], sy = sites[2 * i + 1];
-        const Polygon& cell = cells[i];
-        if (cell.Size() < 3)
-        {
-          continue;
-        }
-        if (density.empty())
-        {
-          const PolygonIntegrals r = IntegratePolygon(cell, sx, sy);
-          sums.Mass[i] = r.Area;
-          sums.MomentX[i] = r.MomentX;
-          sums.MomentY[i] = r.MomentY;
-          sums.Energy[i] = r.SecondMoment;
-          continue;
-        }
-        double cellSums[4] = { 0.0, 0.0, 0.0, 0.0 };
-        DensityCellSums(grid, density, tables, cell, sx, sy, cellSums);
-        sums.Mass[i] = cellSums[0];
-        sums.MomentX[i] = cellSums[1];
-        sums.MomentY[i] = cellSums[2];
-        sums.Energy[i] = cellSums[3];
+        return;
       }
+      const double sx = sites[2 * i], sy = sites[2 * i + 1];
+      double cellSums[4] = { 0.0, 0.0, 0.0, 0.0 };
+      if (density.empty())
+      {
+        const PolygonIntegrals r = IntegratePolygon(cell, sx, sy);
+        cellSums[0] = r.Area;
+        cellSums[1] = r.MomentX;
+        cellSums[2] = r.MomentY;
+        cellSums[3] = r.SecondMoment;
+      }
+      else
+      {
+        DensityCellSums(grid, density, tables, cell, sx, sy, cellSums);
+      }
+      sums.Mass[i] = cellSums[0];
+      sums.MomentX[i] = cellSums[1];
+      sums.MomentY[i] = cellSums[2];
+      sums.Energy[i] = cellSums[3];
     });
   return sums;
 }
