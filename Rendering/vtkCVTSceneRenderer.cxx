@@ -79,7 +79,6 @@ vtkImageData* vtkCVTSceneRenderer::Render(vtkImageData* labels, vtkPolyData* sit
   // Drawn on the CPU, not rendered: a flat picture needs no OpenGL, so it costs a few
   // milliseconds instead of a context and a shader compile, and looks the same everywhere.
   vtkNew<vtkUnsignedCharArray> pixels;
-  pixels->SetName("RGB");
   pixels->SetNumberOfComponents(3);
   pixels->SetNumberOfTuples(static_cast<vtkIdType>(sizeX) * sizeY);
   unsigned char* rgb = pixels->GetPointer(0);
@@ -138,11 +137,7 @@ vtkImageData* vtkCVTSceneRenderer::Render(vtkImageData* labels, vtkPolyData* sit
     }
   }
 
-  // A new image each time: a caller may still hold the previous picture.
-  this->Picture = vtkSmartPointer<vtkImageData>::New();
-  this->Picture->SetDimensions(sizeX, sizeY, 1);
-  this->Picture->GetPointData()->SetScalars(pixels);
-  return this->Picture;
+  return this->KeepPicture(pixels, sizeX, sizeY);
 }
 
 //------------------------------------------------------------------------------
@@ -164,7 +159,12 @@ vtkImageData* vtkCVTSceneRenderer::Snapshot(vtkRenderer* renderer, int width, in
   window->RemoveRenderer(renderer);
   renderer->ReleaseGraphicsResources(window);
   context->RestorePrevious();
+  return this->KeepPicture(pixels, width, height);
+}
 
+//------------------------------------------------------------------------------
+vtkImageData* vtkCVTSceneRenderer::KeepPicture(vtkUnsignedCharArray* pixels, int width, int height)
+{
   // A new image each time: a caller may still hold the previous picture.
   this->Picture = vtkSmartPointer<vtkImageData>::New();
   this->Picture->SetDimensions(width, height, 1);

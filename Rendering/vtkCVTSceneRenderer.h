@@ -19,6 +19,7 @@
 class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
+class vtkUnsignedCharArray;
 
 class CVTRENDERING_EXPORT vtkCVTSceneRenderer : public vtkObject
 {
@@ -77,6 +78,8 @@ private:
 
   /** Renders the renderer's props in a headless window and reads the pixels into Picture. */
   vtkImageData* Snapshot(vtkRenderer* renderer, int width, int height);
+  /** Makes `pixels` (RGB, width x height) a new Picture and returns it. */
+  vtkImageData* KeepPicture(vtkUnsignedCharArray* pixels, int width, int height);
 
   int Size = 800;
   bool ShowCells = true;
