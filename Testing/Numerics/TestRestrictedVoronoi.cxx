@@ -22,6 +22,7 @@
 #include <numeric>
 #include <random>
 #include <set>
+#include <utility>
 
 namespace
 {
@@ -267,6 +268,14 @@ void JitteredGrid(std::vector<std::array<double, 3>>& points, std::vector<char>&
       pinned.push_back(border);
     }
   }
+}
+
+/// The remesh of a dual on the 5 x 5 grids above without the input surface, and with it (the
+/// plane z = 0, reaching past the grid): the triangles before and after the moves along it.
+std::pair<cvt::Remesh, cvt::Remesh> GridRemeshBeforeAndAfterMoves(const cvt::RestrictedDual& dual)
+{
+  const cvt::SurfaceMesh plane = FlatSquare(1, -3.0, 7.0);
+  return { cvt::BuildRemesh(dual, 1), cvt::BuildRemesh(dual, 1, 8, &plane) };
 }
 
 /// 2D sites (x, y) as 3D points at z = 0.
@@ -828,9 +837,7 @@ TEST(RestrictedVoronoi, RemeshSearchesAroundFreeVerticesWhereTheMeanDoesNotWiden
     dual.OnBoundary[i] = pinned[i];
   }
   AddGridTriangles(dual);
-  const cvt::SurfaceMesh plane = FlatSquare(1, -3.0, 7.0);
-  const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
-  const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
+  const auto [before, after] = GridRemeshBeforeAndAfterMoves(dual);
   const double widthBefore = SmallestAngle(before);
   const double widthAfter = SmallestAngle(after);
   EXPECT_LT(widthBefore, 25.0);
@@ -953,9 +960,7 @@ TEST(RestrictedVoronoi, RemeshSearchMovesCreaseVerticesButNotBorderOnes)
   {
     dual.OnBoundary[v] = onBorder(v);
   }
-  const cvt::SurfaceMesh plane = FlatSquare(1, -3.0, 7.0);
-  const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
-  const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
+  const auto [before, after] = GridRemeshBeforeAndAfterMoves(dual);
   const double widthBefore = SmallestAngle(before);
   const double widthAfter = SmallestAngle(after);
   EXPECT_LT(widthBefore, 25.0);
