@@ -129,3 +129,25 @@ TEST(RegressionImage, PictureShowsLabelsAndSites)
   EXPECT_EQ(pixel(56, 24), (std::array<int, 3>{ 255, 255, 255 }));
   EXPECT_LT(pixel(8, 8)[0], 32);
 }
+
+// Labels it cannot draw: no picture, and a message saying what is wrong, never a read past the
+// labels' array.
+TEST(RegressionImage, PictureOfBadLabelsIsRefused)
+{
+  vtkNew<vtkCVTSceneRenderer> scene;
+  vtkNew<vtkImageData> labels;
+  labels->SetDimensions(4, 2, 1);
+  EXPECT_EQ(scene->Render(labels, nullptr), nullptr);
+  EXPECT_NE(scene->GetLastError().find("no SiteId array"), std::string::npos);
+
+  vtkNew<vtkIntArray> ids; // 3 labels for 8 pixels
+  ids->SetName("SiteId");
+  for (int id : { 0, 1, 2 })
+  {
+    ids->InsertNextValue(id);
+  }
+  labels->GetPointData()->AddArray(ids);
+  EXPECT_EQ(scene->Render(labels, nullptr), nullptr);
+  EXPECT_NE(scene->GetLastError().find("shorter than the image"), std::string::npos);
+  EXPECT_EQ(scene->Render(nullptr, nullptr), nullptr);
+}
