@@ -33,9 +33,10 @@ Input:
 Surface (cvt surface):
   --torus R r             a torus of ring radius R and tube radius r (default 1 0.4)
   --gi-resolution W H     geometry image size (default 1024 512)
-  --input MESH            a surface mesh (.vtp .vtk .stl .ply .obj): any orientable manifold
-                          (genus, boundaries, several parts); cleaned (merged points,
-                          triangulated, degenerate triangles dropped, oriented) and remeshed
+  --input MESH            a surface mesh (.vtp .vtk .stl .ply .obj .off): any
+                          orientable manifold (genus, boundaries, several parts); cleaned
+                          (merged points, triangulated, degenerate triangles dropped,
+                          oriented) and remeshed
   --array NAME            with --input: a point array used as density (denser where larger)
   --engine auto|cpu|opengl
                           with --input: cpu (and auto) computes exact restricted Voronoi cells

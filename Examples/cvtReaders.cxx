@@ -2,6 +2,7 @@
 
 #include "cvtErrors.h"
 
+#include "vtkCVTOFFReader.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -217,7 +218,7 @@ struct MeshFormat
 };
 const MeshFormat MeshFormats[] = { { "vtp", Open<vtkXMLPolyDataReader> },
   { "vtk", Open<vtkPolyDataReader> }, { "stl", Open<vtkSTLReader> }, { "ply", Open<vtkPLYReader> },
-  { "obj", Open<vtkOBJReader> } };
+  { "obj", Open<vtkOBJReader> }, { "off", Open<vtkCVTOFFReader> } };
 
 } // namespace
 
@@ -333,7 +334,7 @@ vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options)
     [&ext](const MeshFormat& f) { return ext == f.Extension; });
   if (format == std::end(MeshFormats))
   {
-    Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj");
+    Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj .off");
   }
   vtkSmartPointer<vtkAlgorithm> reader = format->Open(options.Input);
   ProbeReader(reader, options.Input);

@@ -73,6 +73,16 @@ expect_error "cvt: NumberOfSites is 2; a remesh needs at least 3" surface --inpu
 if [ "$(grep -cv '^cvt: warning' "$T/log")" -ne 1 ] || grep -q "ERROR: In\|vtkExecutive" "$T/log"; then
   echo "the error was not one clean line:"; cat "$T/log"; bad=1
 fi
+# OFF meshes (CGAL's and Geogram's format) are read: a tetrahedron with a comment and its counts
+# on the keyword line; a truncated one is refused naming its line.
+printf '%s\n' 'OFF 4 4 6' '# a tetrahedron' '0 0 0' '1 0 0' '0 1 0' '0 0 1' \
+  '3 0 2 1' '3 0 1 3' '3 1 2 3' '3 0 3 2' > "$T/tetra.off"
+if ! env -u DISPLAY "$CVT" surface --input "$T/tetra.off" --sites 20 --iterations 5 --report \
+    --output "$T/tetra" > "$T/log" 2>&1 || ! grep -q "remesh topology *1 parts, genus 0, 0 boundary loops" "$T/log"; then
+  echo "the OFF tetrahedron was not remeshed:"; cat "$T/log"; bad=1
+fi
+head -n 5 "$T/tetra.off" > "$T/truncated.off"
+expect_error "truncated.off' line 5: the file ends after 3 of its 4 vertices" surface --input "$T/truncated.off"
 # An explicit engine is used and named.
 if ! env -u DISPLAY "$CVT" image --engine cpu --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1 ||
   ! grep -q "engine: CPU (asked for the CPU)" "$T/log"; then

@@ -25,10 +25,10 @@ done
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 cmake --install "$BUILD" --prefix "$T/prefix" > "$T/install.log"
-expected="bin/cvt lib/libcvtFilters.so lib/libcvtRendering.so lib/libcvtNumerics.so
+expected="bin/cvt lib/libcvtFilters.so lib/libcvtRendering.so lib/libcvtNumerics.so lib/libcvtIO.so
   lib/cmake/cvt/CVTConfig.cmake include/cvt/vtkCVTImageFilter.h"
 [ "$PLUGIN" = ON ] && expected="$expected lib/paraview-plugins/CVTPlugin/CVTPlugin.so"
-[ -n "$PYDEST" ] && expected="$expected $PYDEST/cvt/__init__.py $PYDEST/cvt/cvtFilters.so"
+[ -n "$PYDEST" ] && expected="$expected $PYDEST/cvt/__init__.py $PYDEST/cvt/cvtFilters.so $PYDEST/cvt/cvtIO.so"
 for f in $expected; do
   [ -e "$T/prefix/$f" ] || { echo "not installed: $f"; exit 1; }
 done

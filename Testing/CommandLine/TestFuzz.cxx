@@ -1,18 +1,21 @@
 // Seeded mutation fuzzing of the parsers and checks the project owns: the `cvt` command line,
-// the --initial-sites CSV, and the mesh path (checks, repairs, topology, restricted Voronoi
-// diagram, remesh) in the core and through vtkCVTRemeshFilter with corrupt connectivity. Every
-// case must end in a result that meets the documented invariants or in a clear error, never a
-// crash or another exception; CI also runs this under AddressSanitizer and UBSan
-// (tools/sanitize.sh). Fixed seeds and case counts keep it reproducible and bounded (141,000
-// cases in about 2 s here). The outcome counts are printed.
+// the --initial-sites CSV, OFF files (vtkCVTOFFReader), and the mesh path (checks, repairs,
+// topology, restricted Voronoi diagram, remesh) in the core and through vtkCVTRemeshFilter with
+// corrupt connectivity. Every case must end in a result that meets the documented invariants or in
+// a clear error, never a crash or another exception; CI also runs this under AddressSanitizer and
+// UBSan (tools/sanitize.sh). Fixed seeds and case counts keep it reproducible and bounded (144,000
+// cases in about 3 s here). The outcome counts are printed.
 #include "cvtCommandLine.h"
 #include "cvtRemesh.h"
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSurfaceMesh.h"
+#include "vtkCVTOFFReader.h"
 #include "vtkCVTRemeshFilter.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkDataArrayRange.h"
 #include "vtkExecutive.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
@@ -23,10 +26,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <random>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -81,6 +86,31 @@ std::string RandomBytes(std::mt19937_64& random, size_t count)
   }
   return bytes;
 }
+/// `text` with one to five mutations: flipped bits, a cut, nasty tokens or random bytes inserted.
+std::string Mutated(std::string text, std::mt19937_64& random)
+{
+  const int mutations = 1 + static_cast<int>(random() % 5);
+  for (int m = 0; m < mutations && !text.empty(); ++m)
+  {
+    const size_t at = random() % text.size();
+    switch (random() % 4)
+    {
+      case 0:
+        text[at] = static_cast<char>(text[at] ^ (1 << (random() % 8)));
+        break;
+      case 1:
+        text.resize(at);
+        break;
+      case 2:
+        text.insert(at, NastyTokens[random() % NastyTokens.size()]);
+        break;
+      default:
+        text.insert(at, RandomBytes(random, random() % 16));
+    }
+  }
+  return text;
+}
+
 } // namespace
 
 TEST(Fuzz, CommandLine)
@@ -155,27 +185,7 @@ TEST(Fuzz, SitesCsv)
   int parsed = 0, refused = 0;
   for (int n = 0; n < 30000; ++n)
   {
-    std::string text = valid;
-    const int mutations = 1 + static_cast<int>(random() % 5);
-    for (int m = 0; m < mutations && !text.empty(); ++m)
-    {
-      const size_t at = random() % text.size();
-      switch (random() % 4)
-      {
-        case 0:
-          text[at] = static_cast<char>(text[at] ^ (1 << (random() % 8)));
-          break;
-        case 1:
-          text.resize(at);
-          break;
-        case 2:
-          text.insert(at, NastyTokens[random() % NastyTokens.size()]);
-          break;
-        default:
-          text.insert(at, RandomBytes(random, random() % 16));
-      }
-    }
-    std::istringstream in(text);
+    std::istringstream in(Mutated(valid, random));
     try
     {
       const std::vector<double> xy = cvtcli::ParseSitesCsv(in, "fuzz.csv");
@@ -195,6 +205,54 @@ TEST(Fuzz, SitesCsv)
   }
   std::printf("sites files: %d parsed, %d refused naming the line, 0 crashes\n", parsed, refused);
   EXPECT_GT(parsed, 100);
+  EXPECT_GT(refused, 100);
+}
+
+TEST(Fuzz, OffFiles)
+{
+  std::mt19937_64 random(11);
+  const std::string valid = "OFF\n# pyramid\n5 5 8\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0.7\n"
+                            "4 0 1 2 3\n3 0 4 1 255 0 0\n3 1 4 2\n3 2 4 3\n3 3 4 0\n";
+  const std::string path = testing::TempDir() + "cvt_fuzz_" + std::to_string(getpid()) + ".off";
+  int read = 0, refused = 0;
+  for (int n = 0; n < 3000; ++n)
+  {
+    std::ofstream(path, std::ios::binary) << Mutated(valid, random);
+    vtkNew<vtkCVTOFFReader> reader;
+    vtkNew<vtkCallbackCommand> quiet; // the refusals are counted, not printed
+    reader->AddObserver(vtkCommand::ErrorEvent, quiet);
+    reader->SetFileName(path.c_str());
+    if (reader->GetExecutive()->Update())
+    {
+      vtkPolyData* mesh = reader->GetOutput();
+      // Every face has at least 3 vertices, all of them points of the mesh.
+      vtkCellArray* faces = mesh->GetPolys();
+      EXPECT_TRUE(faces->IsValid());
+      for (vtkIdType f = 0; f < faces->GetNumberOfCells(); ++f)
+      {
+        EXPECT_GE(faces->GetCellSize(f), 3);
+      }
+      const vtkIdType points = mesh->GetNumberOfPoints();
+      faces->Visit(
+        [points](auto& state)
+        {
+          for (const auto id : vtk::DataArrayValueRange<1>(state.GetConnectivity()))
+          {
+            EXPECT_TRUE(id >= 0 && id < points) << "face vertex " << id;
+          }
+        });
+      ++read;
+    }
+    else
+    {
+      EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+      ++refused;
+    }
+    ASSERT_FALSE(HasFailure()) << "case " << n;
+  }
+  std::remove(path.c_str());
+  std::printf("OFF files: %d read, %d refused, 0 crashes\n", read, refused);
+  EXPECT_GT(read, 100);
   EXPECT_GT(refused, 100);
 }
 

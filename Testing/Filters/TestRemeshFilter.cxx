@@ -26,6 +26,8 @@
 #include "vtkTriangleFilter.h"
 #include "vtkVersionMacros.h" // for VTK_VERSION_CHECK
 
+#include "cvtFilterTestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,18 +37,6 @@
 
 namespace
 {
-class Messages : public vtkCommand
-{
-public:
-  static Messages* New() { return new Messages; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
-      static_cast<const char*>(data);
-  }
-  std::string Errors, Warnings;
-};
-
 double Field(vtkDataObject* data, const char* name)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
@@ -169,7 +159,7 @@ vtkSmartPointer<vtkPolyData> Torus(double tube, int around, int along)
 struct RemeshRun
 {
   vtkNew<vtkCVTRemeshFilter> Filter;
-  vtkNew<Messages> Log;
+  vtkNew<cvttest::Messages> Log;
   int Status = 0;
   explicit RemeshRun(vtkPolyData* input, int sites = 200, int iterations = 40)
   {
@@ -575,7 +565,7 @@ TEST(RemeshFilter, BadInputGivesAClearErrorAndEmptyOutputs)
     [](vtkPolyData* input, const std::string& part, int sites = 100, const char* density = "")
   {
     vtkNew<vtkCVTRemeshFilter> filter;
-    vtkNew<Messages> log;
+    vtkNew<cvttest::Messages> log;
     filter->AddObserver(vtkCommand::ErrorEvent, log);
     filter->SetInputData(input);
     filter->SetNumberOfSites(sites);

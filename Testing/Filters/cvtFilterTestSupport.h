@@ -4,12 +4,28 @@
 
 #include "vtkCVTGeometryImageSource.h"
 
+#include "vtkCommand.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
+#include <string>
+
 namespace cvttest
 {
+
+/// Collects an algorithm's error and warning messages (observe ErrorEvent and WarningEvent).
+class Messages : public vtkCommand
+{
+public:
+  static Messages* New() { return new Messages; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
+      static_cast<const char*>(data);
+  }
+  std::string Errors, Warnings;
+};
 
 /// The default torus (ring radius 1, tube radius 0.4) as a w x h geometry image.
 inline vtkSmartPointer<vtkImageData> TorusImage(int w, int h)

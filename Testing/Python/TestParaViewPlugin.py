@@ -125,6 +125,24 @@ def main(plugin, data_dir, output_dir):
     mesh_cvt.UpdatePipeline()
     check(mesh_cvt.GetDataInformation(2).GetNumberOfPoints() == 100, "mesh remesh has 100 vertices")
 
+    # File > Open of an OFF mesh picks the plugin's reader; its octahedron remeshes closed.
+    from paraview.simple import OpenDataFile
+    octahedron = os.path.join(output_dir, "octahedron.off")
+    with open(octahedron, "w") as off:
+        off.write("OFF 6 8 12\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                  "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n")
+    off_reader = OpenDataFile(octahedron)
+    check(off_reader is not None and off_reader.GetXMLName() == "CVTOFFReader",
+          "File > Open of .off uses CVTOFFReader, not %s" %
+          (off_reader.GetXMLName() if off_reader else None))
+    if off_reader is not None:
+        off_remesh = CVTRemesh(Input=off_reader, NumberOfSites=60, MaximumNumberOfIterations=10)
+        off_remesh.UpdatePipeline()
+        info = off_remesh.GetDataInformation(2)
+        check(info.GetNumberOfPoints() == 60 and info.GetNumberOfCells() == 2 * 60 - 4,
+              "the OFF octahedron remeshes to a closed genus-0 mesh of 60 vertices (%d, %d)" %
+              (info.GetNumberOfPoints(), info.GetNumberOfCells()))
+
     # The first picture of Show(), as pvpython gives it: the plugin's display hints.
     first_view = CreateView("RenderView")
     shown = {

@@ -7,6 +7,7 @@ from vtkmodules.vtkCommonDataModel import vtkDataObject
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 
 from cvt.cvtFilters import vtkCVTImageFilter
+from cvt.cvtIO import vtkCVTOFFReader
 from cvt.cvtRendering import vtkCVTOpenGLEngine, vtkCVTSceneRenderer
 
 source = vtkRTAnalyticSource()
@@ -28,6 +29,7 @@ assert cvt.GetLabelsOutput().GetPointData().GetArray("SiteId").GetRange()[1] <= 
 picture = vtkCVTSceneRenderer().Render(cvt.GetLabelsOutput(), sites)
 assert picture is not None and picture.GetDimensions()[0] == 800
 assert "Context" in str(vtkCVTOpenGLEngine())
+assert "FileName: (none)" in str(vtkCVTOFFReader())
 
 messages = vtkStringOutputWindow()
 vtkOutputWindow.SetInstance(messages)
