@@ -132,6 +132,11 @@ int vtkCVTOFFReader::RequestData(
     vtkErrorMacro("Cannot open '" << this->FileName << "': no such file or no permission.");
     return 0;
   }
+  // Each vertex line holds at least 6 characters ("0 0 0\n") and each face line 8: a wrong
+  // header must not size the arrays beyond what the file can hold (it fails further down).
+  in.seekg(0, std::ios::end);
+  const long long fileSize = std::max<long long>(0, static_cast<long long>(in.tellg()));
+  in.seekg(0);
   OffLines lines(in);
   std::string line;
   auto fail = [&](const std::string& what)
@@ -178,17 +183,9 @@ int vtkCVTOFFReader::RequestData(
       line + "'.");
   }
 
-  // Each vertex line holds at least 6 characters ("0 0 0\n") and each face line 8: a wrong
-  // header must not size the arrays beyond what the file can hold (it fails further down).
-  in.clear();
-  const std::streamoff position = in.tellg();
-  in.seekg(0, std::ios::end);
-  const long long size = std::max<long long>(0, static_cast<long long>(in.tellg()));
-  in.seekg(position);
-
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->Allocate(static_cast<vtkIdType>(std::min(vertexCount, size / 6)));
+  points->Allocate(static_cast<vtkIdType>(std::min(vertexCount, fileSize / 6)));
   for (long long v = 0; v < vertexCount; ++v)
   {
     if (!lines.Next(line))
@@ -208,8 +205,8 @@ int vtkCVTOFFReader::RequestData(
 
   vtkNew<vtkIdTypeArray> offsets;
   vtkNew<vtkIdTypeArray> connectivity;
-  offsets->Allocate(std::min(faceCount, size / 8) + 1);
-  connectivity->Allocate(3 * std::min(faceCount, size / 8));
+  offsets->Allocate(std::min(faceCount, fileSize / 8) + 1);
+  connectivity->Allocate(3 * std::min(faceCount, fileSize / 8));
   offsets->InsertNextValue(0);
   for (long long f = 0; f < faceCount; ++f)
   {
@@ -219,14 +216,14 @@ int vtkCVTOFFReader::RequestData(
         std::to_string(faceCount) + " faces.");
     }
     words = Words(line);
-    long long size = 0;
-    if (!ParseInteger(words[0], size) || size < 3 ||
-      static_cast<long long>(words.size()) < size + 1)
+    long long corners = 0;
+    if (!ParseInteger(words[0], corners) || corners < 3 ||
+      static_cast<long long>(words.size()) < corners + 1)
     {
       return fail("face " + std::to_string(f) +
         " needs a vertex count of at least 3 and that many vertex indices, got '" + line + "'.");
     }
-    for (long long k = 1; k <= size; ++k)
+    for (long long k = 1; k <= corners; ++k)
     {
       long long index = -1;
       if (!ParseInteger(words[k], index) || index < 0 || index >= vertexCount)
