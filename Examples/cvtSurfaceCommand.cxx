@@ -128,7 +128,8 @@ int RunRemesh(const Options& options)
               << Field(remesh, "SeparatedVertices") << " coincident vertices separated, "
               << Field(remesh, "FlippedEdges") << " edges flipped for angles, "
               << Field(remesh, "ValenceFlips") << " for valence, " << Field(remesh, "MovedVertices")
-              << " vertices moved, " << Field(remesh, "CollapsedEdges") << " edges collapsed)\n"
+              << " vertices moved, " << Field(remesh, "CollapsedEdges") << " edges collapsed, "
+              << Field(remesh, "FittedVertices") << " vertices moved towards tips)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "

@@ -350,6 +350,7 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
   cvtvtk::AddFieldValue(fields, "MovedVertices", remesh.MovedVertices);
   cvtvtk::AddFieldValue(fields, "CollapsedEdges", remesh.CollapsedEdges);
   cvtvtk::AddFieldValue(fields, "SeparatedVertices", remesh.SeparatedVertices);
+  cvtvtk::AddFieldValue(fields, "FittedVertices", remesh.FittedVertices);
   AddTopology(fields, "", topology);
   AddTopology(fields, "Input", input);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -21,6 +22,10 @@ namespace
 {
 /// Below this angle (radians: 10 degrees) a triangle of pinned vertices is a sliver.
 constexpr double MinimumBorderAngle = 10.0 * 3.14159265358979323846 / 180.0;
+
+/// Input points farther than this from the remesh (a fraction of the input's bounding-box
+/// diagonal; the remesh should stay within 1% of the input) pull free vertices towards them.
+constexpr double FarFromInput = 0.008;
 
 /// A triangle with a corner under this angle (radians: 30 degrees) is thin: the repairs below
 /// (flips, moves, collapses) aim to widen it.
@@ -701,6 +706,245 @@ int CollapseThinTriangles(
   return collapsed;
 }
 
+/// Moves free vertices towards the input points that lie farthest from the remesh, where those
+/// are farther than `tolerance`: a tip or ridge thinner than the cells (a toe, an ear) lies in
+/// one or two cells, whose flat triangles cut it off. Each input point is measured against the
+/// triangles round its nearest remesh vertex and round that vertex's neighbours. A free vertex
+/// off the border whose own points reach beyond `tolerance` tries the surface points nearest to
+/// the farthest of them and to places a quarter, half and three quarters of the way there, the
+/// farthest first; it takes the first that brings its own points 10% closer, takes no point
+/// within two edges farther than the farthest was, keeps its triangles' corners at 30 degrees
+/// or more (or no smaller than before), turns none of them over and lifts their centroids no
+/// farther from the input than `tolerance` (or than before). Up to three passes, the later
+/// ones round the vertices moved. The connectivity, and so the valences, stay. Returns the
+/// number of vertices moved.
+int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceMesh& surface,
+  const SurfaceProjector& projector, double tolerance)
+{
+  const int vertices = static_cast<int>(remesh.SiteIds.size());
+  std::vector<std::vector<int>> around(static_cast<size_t>(vertices)); // incident triangles
+  for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
+  {
+    for (int v : remesh.Triangles[t])
+    {
+      around[static_cast<size_t>(v)].push_back(t);
+    }
+  }
+  const std::vector<char> onBorder = BorderVertices(remesh);
+  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
+  std::vector<std::vector<int>> neighbours(static_cast<size_t>(vertices));
+  for (int v = 0; v < vertices; ++v)
+  {
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      for (int w : remesh.Triangles[static_cast<size_t>(t)])
+      {
+        if (w != v)
+        {
+          neighbours[static_cast<size_t>(v)].push_back(w);
+        }
+      }
+    }
+    auto& n = neighbours[static_cast<size_t>(v)];
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  // The triangles a point nearest to vertex v is measured against.
+  std::vector<std::vector<int>> near(static_cast<size_t>(vertices));
+  for (int v = 0; v < vertices; ++v)
+  {
+    auto& n = near[static_cast<size_t>(v)];
+    n = around[static_cast<size_t>(v)];
+    for (int w : neighbours[static_cast<size_t>(v)])
+    {
+      n.insert(
+        n.end(), around[static_cast<size_t>(w)].begin(), around[static_cast<size_t>(w)].end());
+    }
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  // The input points nearest to each vertex (used vertices only).
+  std::vector<double> used;
+  std::vector<int> usedVertex;
+  for (int v = 0; v < vertices; ++v)
+  {
+    if (!around[static_cast<size_t>(v)].empty())
+    {
+      used.insert(used.end(), point(v), point(v) + 3);
+      usedVertex.push_back(v);
+    }
+  }
+  if (usedVertex.empty())
+  {
+    return 0;
+  }
+  std::vector<std::vector<int>> nearestTo(static_cast<size_t>(vertices));
+  {
+    PointCloud<3> cloud{ &used };
+    PointTree<3> tree(3, cloud);
+    tree.buildIndex();
+    for (int p = 0; p < surface.NumberOfPoints(); ++p)
+    {
+      std::uint32_t i = 0;
+      double d2 = 0.0;
+      tree.knnSearch(surface.Point(p), 1, &i, &d2);
+      nearestTo[static_cast<size_t>(usedVertex[i])].push_back(p);
+    }
+  }
+  // The largest distance to the remesh of the points nearest to the vertices of `group`, and
+  // the farthest point.
+  const auto farthest = [&](const std::vector<int>& group, int& where)
+  {
+    double largest = 0.0;
+    where = -1;
+    for (int w : group)
+    {
+      for (int p : nearestTo[static_cast<size_t>(w)])
+      {
+        double nearest = std::numeric_limits<double>::max();
+        for (int t : near[static_cast<size_t>(w)])
+        {
+          const std::array<int, 3>& c = remesh.Triangles[static_cast<size_t>(t)];
+          double q[3], weights[3];
+          ClosestPointOnTriangle(
+            surface.Point(p), point(c[0]), point(c[1]), point(c[2]), q, weights);
+          nearest = std::min(nearest, Distance2(surface.Point(p), q));
+        }
+        if (nearest > largest)
+        {
+          largest = nearest;
+          where = p;
+        }
+      }
+    }
+    return std::sqrt(largest);
+  };
+  // The smallest corner of v's triangles and how far their centroids lie from the input; false
+  // when one turns over against `reference` (v's place before the move).
+  const auto fan = [&](int v, const double* reference, double& smallest, double& lift)
+  {
+    smallest = 10.0;
+    std::vector<std::array<const double*, 3>> corners;
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+      std::array<const double*, 3> p, before;
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = point(tri[k]);
+        before[k] = tri[k] == v ? reference : p[k];
+      }
+      double n0[3], n1[3];
+      UnitNormal(before[0], before[1], before[2], n0);
+      UnitNormal(p[0], p[1], p[2], n1);
+      if (Dot(n0, n1) < 0.5)
+      {
+        return false;
+      }
+      smallest = std::min(smallest, SmallestCorner(p[0], p[1], p[2]));
+      corners.push_back(p);
+    }
+    lift = projector.FarthestCentroid(corners);
+    return true;
+  };
+  int moved = 0;
+  // Vertices to look at: all, then those within two edges of a vertex moved in the pass before.
+  std::vector<char> changed(static_cast<size_t>(vertices), 1);
+  for (int pass = 0; pass < 3; ++pass)
+  {
+    // The vertices whose own points lie beyond the tolerance, farthest first.
+    std::vector<std::pair<double, int>> order;
+    for (int v = 0; v < vertices; ++v)
+    {
+      int far = -1;
+      if (changed[static_cast<size_t>(v)] && !pinned[static_cast<size_t>(v)] &&
+        !onBorder[static_cast<size_t>(v)] && !around[static_cast<size_t>(v)].empty())
+      {
+        const double distance = farthest({ v }, far);
+        if (distance > tolerance)
+        {
+          order.emplace_back(distance, v);
+        }
+      }
+    }
+    std::fill(changed.begin(), changed.end(), 0);
+    std::sort(order.begin(), order.end(), std::greater<>());
+    int movedThisPass = 0;
+    for (const auto& [ownBefore, v] : order)
+    {
+      int far = -1;
+      farthest({ v }, far);
+      // The vertices whose points v's triangles can be nearest to.
+      std::vector<int> group{ v };
+      for (int w : neighbours[static_cast<size_t>(v)])
+      {
+        group.insert(group.end(), neighbours[static_cast<size_t>(w)].begin(),
+          neighbours[static_cast<size_t>(w)].end());
+      }
+      std::sort(group.begin(), group.end());
+      group.erase(std::unique(group.begin(), group.end()), group.end());
+      int ignored = -1;
+      const double before = farthest(group, ignored);
+      double smallestBefore = 0.0, liftBefore = 0.0;
+      const std::array<double, 3> start{ point(v)[0], point(v)[1], point(v)[2] };
+      fan(v, start.data(), smallestBefore, liftBefore);
+      const int startTriangle = remesh.SourceTriangles[static_cast<size_t>(v)];
+      const std::array<double, 3> startWeights{
+        remesh.SourceBarycentric[3 * static_cast<size_t>(v)],
+        remesh.SourceBarycentric[3 * static_cast<size_t>(v) + 1],
+        remesh.SourceBarycentric[3 * static_cast<size_t>(v) + 2]
+      };
+      bool accepted = false;
+      for (double reach : { 1.0, 0.75, 0.5, 0.25 })
+      {
+        double target[3], q[3], weights[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          target[k] = start[k] + reach * (surface.Point(far)[k] - start[k]);
+        }
+        const int triangle = projector.Nearest(target, q, weights);
+        if (triangle < 0)
+        {
+          continue;
+        }
+        std::copy(q, q + 3, point(v));
+        double smallest = 0.0, lift = 0.0;
+        if (fan(v, start.data(), smallest, lift) &&
+          smallest >= std::min(smallestBefore, ThinCorner) &&
+          lift <= std::max(liftBefore, tolerance) && farthest({ v }, ignored) < 0.9 * ownBefore &&
+          farthest(group, ignored) <= before)
+        {
+          remesh.SourceTriangles[static_cast<size_t>(v)] = triangle;
+          std::copy(weights, weights + 3, &remesh.SourceBarycentric[3 * static_cast<size_t>(v)]);
+          accepted = true;
+          break;
+        }
+      }
+      if (accepted)
+      {
+        ++movedThisPass;
+        for (int w : group)
+        {
+          changed[static_cast<size_t>(w)] = 1;
+        }
+      }
+      else
+      {
+        std::copy(start.begin(), start.end(), point(v));
+        remesh.SourceTriangles[static_cast<size_t>(v)] = startTriangle;
+        std::copy(startWeights.begin(), startWeights.end(),
+          &remesh.SourceBarycentric[3 * static_cast<size_t>(v)]);
+      }
+    }
+    moved += movedThisPass;
+    if (movedThisPass == 0)
+    {
+      break;
+    }
+  }
+  return moved;
+}
+
 /// Drops the vertices in no triangle (collapsed ones) and numbers the others in order, in
 /// `pinned` too.
 void DropUnusedVertices(Remesh& remesh, std::vector<char>& pinned)
@@ -1087,9 +1331,15 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
       return SmallestCorner(&remesh.Points[3 * t[0]], &remesh.Points[3 * t[1]],
                &remesh.Points[3 * t[2]]) < ThinCorner;
     });
-  if (surface && anyThin)
+  if (!surface)
   {
-    const SurfaceProjector projector(*surface);
+    SplitPinchedVertices(remesh);
+    remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);
+    return remesh;
+  }
+  const SurfaceProjector projector(*surface);
+  if (anyThin)
+  {
     remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, projector, false);
     remesh.CollapsedEdges = CollapseThinTriangles(remesh, pinned, projector);
     if (remesh.CollapsedEdges > 0)
@@ -1110,6 +1360,8 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     }
     remesh.MovedVertices += RelaxThinTriangles(remesh, onPinnedBorder, projector, true);
   }
+  remesh.FittedVertices =
+    FitToSurface(remesh, pinned, *surface, projector, FarFromInput * BoundingBoxDiagonal(*surface));
   SplitPinchedVertices(remesh);
   remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);
   return remesh;

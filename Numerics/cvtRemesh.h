@@ -29,6 +29,7 @@ struct Remesh
   int MovedVertices = 0;                 // free vertices of thin triangles moved along the surface
   int CollapsedEdges = 0;                // edges of thin triangles collapsed (a vertex fewer each)
   int SeparatedVertices = 0;             // vertices at one place moved apart (split copies)
+  int FittedVertices = 0; // free vertices moved towards input tips and ridges the remesh cut off
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
@@ -43,7 +44,10 @@ struct Remesh
 /// moved along it where that widens them, and where that is not enough an edge of theirs is
 /// collapsed (the remesh then has a vertex fewer) if that widens the triangles around it; the
 /// vertices of thin triangles left, free or pinned to a crease (not to the border), then search
-/// the surface around them for wider places.
+/// the surface around them for wider places. Last, free vertices move towards input points
+/// that lie farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and
+/// ridges thinner than the cells), where that brings them closer without a corner under 30
+/// degrees.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 

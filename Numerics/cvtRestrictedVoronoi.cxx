@@ -824,17 +824,7 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const EdgeTable& edges
     size_t Edge; // in the edge table
   };
   std::vector<Line> lines;
-  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
-  for (int p = 0; p < pointCount; ++p)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], mesh.Point(p)[k]);
-      hi[k] = std::max(hi[k], mesh.Point(p)[k]);
-    }
-  }
-  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
-    (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  const double diagonal = BoundingBoxDiagonal(mesh);
   const double sharp = std::cos(FeatureAngleDegrees * 3.14159265358979323846 / 180.0);
   for (size_t edge = 0; edge < edges.NumberOfEdges(); ++edge)
   {

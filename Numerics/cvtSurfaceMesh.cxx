@@ -585,6 +585,23 @@ MeshTopology ComputeMeshTopology(
   return topology;
 }
 
+double BoundingBoxDiagonal(const SurfaceMesh& mesh)
+{
+  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], mesh.Point(p)[k]);
+      hi[k] = std::max(hi[k], mesh.Point(p)[k]);
+    }
+  }
+  return mesh.NumberOfPoints() == 0
+    ? 0.0
+    : std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+        (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
 double SurfaceArea(const SurfaceMesh& mesh)
 {
   double area = 0.0;

@@ -81,6 +81,9 @@ CVTNUMERICS_EXPORT std::vector<std::vector<int>> TraceLoops(
 CVTNUMERICS_EXPORT MeshTopology ComputeMeshTopology(
   int numberOfPoints, const std::vector<std::array<int, 3>>& triangles);
 
+/// The length of the diagonal of the box round the mesh's points.
+CVTNUMERICS_EXPORT double BoundingBoxDiagonal(const SurfaceMesh& mesh);
+
 /// Total area, and each triangle's area times its mean density (the sampling weight).
 CVTNUMERICS_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
 

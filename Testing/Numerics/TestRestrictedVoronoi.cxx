@@ -779,6 +779,22 @@ TEST(RestrictedVoronoi, RemeshFillsHolesWithTheWidestTriangles)
   EXPECT_GT(smallest, 38.0);
 }
 
+/// A moved remesh vertex's source triangle and barycentric coordinates give its point back.
+void ExpectSourceGivesThePointBack(
+  const cvt::Remesh& remesh, const cvt::SurfaceMesh& surface, int vertex)
+{
+  const auto& source = surface.Triangles[remesh.SourceTriangles[vertex]];
+  for (int c = 0; c < 3; ++c)
+  {
+    double x = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      x += remesh.SourceBarycentric[3 * vertex + k] * surface.Point(source[k])[c];
+    }
+    EXPECT_NEAR(x, remesh.Points[3 * vertex + c], 1e-9);
+  }
+}
+
 TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
 {
   // A fan of six pinned vertices (a hexagon, as along a crease) around a free vertex close to
@@ -802,6 +818,7 @@ TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
   const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &plane);
   EXPECT_EQ(before.MovedVertices, 0);
   EXPECT_EQ(after.MovedVertices, 1);
+  EXPECT_EQ(after.FittedVertices, 0); // flat: no input point is far from the remesh
   EXPECT_LT(SmallestAngle(before), 10.0);
   EXPECT_GT(SmallestAngle(after), 55.0);
 
@@ -809,17 +826,7 @@ TEST(RestrictedVoronoi, RemeshMovesFreeVerticesOfThinTrianglesAlongTheSurface)
     std::find(after.SiteIds.begin(), after.SiteIds.end(), 0) - after.SiteIds.begin());
   EXPECT_NEAR(after.Points[3 * centre], 0.0, 1e-9);
   EXPECT_EQ(after.Points[3 * centre + 2], 0.0); // on the surface
-  // Its source triangle and barycentric coordinates give the point back.
-  const auto& source = plane.Triangles[after.SourceTriangles[centre]];
-  for (int c = 0; c < 3; ++c)
-  {
-    double x = 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      x += after.SourceBarycentric[3 * centre + k] * plane.Point(source[k])[c];
-    }
-    EXPECT_NEAR(x, after.Points[3 * centre + c], 1e-9);
-  }
+  ExpectSourceGivesThePointBack(after, plane, centre);
 }
 
 TEST(RestrictedVoronoi, RemeshSearchesAroundFreeVerticesWhereTheMeanDoesNotWiden)
@@ -978,6 +985,62 @@ TEST(RestrictedVoronoi, RemeshSearchMovesCreaseVerticesButNotBorderOnes)
   }
   std::cout << "[ measured ] smallest angle " << widthBefore << " -> " << widthAfter << " degrees, "
             << after.MovedVertices << " moves, " << after.FlippedEdges << " flips\n";
+}
+
+/// A hexagonal spike: six points round the unit circle at z = 0 and an apex at (0, 0, height),
+/// and the dual of its remesh by a free vertex half way up the edge to point 1, with the six
+/// round it pinned (the border).
+std::pair<cvt::SurfaceMesh, cvt::RestrictedDual> SpikeAndFlatterRemesh(double height)
+{
+  cvt::SurfaceMesh spike;
+  spike.Points = { 0.0, 0.0, height };
+  std::vector<std::array<double, 3>> points = { { 0.5, 0.0, 0.5 * height } };
+  std::vector<char> pinned = { 0 };
+  for (int k = 0; k < 6; ++k)
+  {
+    const double angle = k * 3.14159265358979323846 / 3.0;
+    spike.Points.insert(spike.Points.end(), { std::cos(angle), std::sin(angle), 0.0 });
+    spike.Triangles.push_back({ 0, 1 + k, 1 + (k + 1) % 6 });
+    points.push_back({ std::cos(angle), std::sin(angle), 0.0 });
+    pinned.push_back(1);
+  }
+  cvt::RestrictedDual dual = DualAt(points, true, pinned);
+  dual.Triangles = spike.Triangles; // the same fan, round the free vertex
+  return { spike, dual };
+}
+
+TEST(RestrictedVoronoi, RemeshVerticesReachForTipsTheTrianglesCutOff)
+{
+  // The remesh of a spike whose free vertex sits half way up its side cuts the apex off (by
+  // far more than 0.8% of the bounding-box diagonal of 2.7), with no corner under 30 degrees.
+  // Given the input, the vertex moves to the apex and the remesh is the spike itself.
+  const auto [spike, dual] = SpikeAndFlatterRemesh(0.5);
+  const cvt::Remesh before = cvt::BuildRemesh(dual, 1);
+  const cvt::Remesh after = cvt::BuildRemesh(dual, 1, 8, &spike);
+  EXPECT_EQ(before.FittedVertices, 0);
+  ASSERT_EQ(after.FittedVertices, 1);
+  EXPECT_EQ(after.MovedVertices, 0); // not thin: the move is the fit's
+  const int tip = static_cast<int>(
+    std::find(after.SiteIds.begin(), after.SiteIds.end(), 0) - after.SiteIds.begin());
+  EXPECT_NEAR(after.Points[3 * tip], 0.0, 1e-9);
+  EXPECT_NEAR(after.Points[3 * tip + 1], 0.0, 1e-9);
+  EXPECT_NEAR(after.Points[3 * tip + 2], 0.5, 1e-9);
+  EXPECT_GT(SmallestAngle(after), 50.0);
+  ExpectSourceGivesThePointBack(after, spike, tip);
+
+  // A spike so sharp that its apex has a 26-degree corner: the vertex climbs only as far as its
+  // corners stay at 30 degrees or more, and still comes closer to the apex.
+  const auto [sharp, sharpDual] = SpikeAndFlatterRemesh(2.0);
+  const cvt::Remesh climbed = cvt::BuildRemesh(sharpDual, 1, 8, &sharp);
+  ASSERT_EQ(climbed.FittedVertices, 1);
+  EXPECT_GE(SmallestAngle(climbed), 30.0);
+  const int vertex = static_cast<int>(
+    std::find(climbed.SiteIds.begin(), climbed.SiteIds.end(), 0) - climbed.SiteIds.begin());
+  EXPECT_GT(climbed.Points[3 * vertex + 2], 1.0 + 1e-6);
+  EXPECT_LT(climbed.Points[3 * vertex + 2], 2.0 - 1e-6);
+  std::cout << "[ measured ] sharp spike: the vertex climbed from height 1 to "
+            << climbed.Points[3 * vertex + 2] << " of 2, smallest angle " << SmallestAngle(climbed)
+            << " degrees\n";
 }
 
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
