@@ -330,6 +330,20 @@ private:
   PointTree<3> Tree;
 };
 
+/// Per vertex of `remesh`: the triangles it is a corner of.
+std::vector<std::vector<int>> TrianglesAroundVertices(const Remesh& remesh)
+{
+  std::vector<std::vector<int>> around(remesh.SiteIds.size());
+  for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
+  {
+    for (int v : remesh.Triangles[static_cast<size_t>(t)])
+    {
+      around[static_cast<size_t>(v)].push_back(t);
+    }
+  }
+  return around;
+}
+
 /// Per vertex of `remesh`: whether it ends an edge with one triangle (the remesh's border).
 std::vector<char> BorderVertices(const Remesh& remesh)
 {
@@ -358,14 +372,7 @@ int RelaxThinTriangles(
   Remesh& remesh, const std::vector<char>& pinned, const SurfaceProjector& projector, bool search)
 {
   const int vertices = static_cast<int>(remesh.SiteIds.size());
-  std::vector<std::vector<int>> around(static_cast<size_t>(vertices)); // incident triangles
-  for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
-  {
-    for (int v : remesh.Triangles[t])
-    {
-      around[static_cast<size_t>(v)].push_back(t);
-    }
-  }
+  const std::vector<std::vector<int>> around = TrianglesAroundVertices(remesh);
   const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
   const auto smallestAround = [&](int v, const double* at, double& smallest)
   {
@@ -514,17 +521,10 @@ int RelaxThinTriangles(
 int CollapseThinTriangles(
   Remesh& remesh, const std::vector<char>& pinned, const SurfaceProjector& projector)
 {
-  const size_t vertices = remesh.SiteIds.size();
-  std::vector<std::vector<int>> around(vertices); // incident triangles, dead ones included
+  // Incident triangles, dead ones included.
+  std::vector<std::vector<int>> around = TrianglesAroundVertices(remesh);
   std::vector<char> alive(remesh.Triangles.size(), 1);
   const std::vector<char> onBorder = BorderVertices(remesh);
-  for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
-  {
-    for (int v : remesh.Triangles[t])
-    {
-      around[static_cast<size_t>(v)].push_back(t);
-    }
-  }
   const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
   // Triangle t's corners with vertex `from` at vertex `to`'s place.
   const auto corners = [&](int t, int from, int to)
@@ -722,14 +722,7 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceM
   const SurfaceProjector& projector, double tolerance)
 {
   const int vertices = static_cast<int>(remesh.SiteIds.size());
-  std::vector<std::vector<int>> around(static_cast<size_t>(vertices)); // incident triangles
-  for (int t = 0; t < static_cast<int>(remesh.Triangles.size()); ++t)
-  {
-    for (int v : remesh.Triangles[t])
-    {
-      around[static_cast<size_t>(v)].push_back(t);
-    }
-  }
+  const std::vector<std::vector<int>> around = TrianglesAroundVertices(remesh);
   const std::vector<char> onBorder = BorderVertices(remesh);
   const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
   std::vector<std::vector<int>> neighbours(static_cast<size_t>(vertices));
