@@ -110,13 +110,9 @@ def main(argv):
     check_same("image: dual triangles", counts(image, 2)[1],
                alone.GetDualOutput().GetNumberOfCells())
     check_same("image: history rows", counts(image, 3)[2], alone.GetHistoryOutput().GetNumberOfRows())
-    energy = servermanager.Fetch(image).GetFieldData().GetArray("Energy").GetValue(0)
-    reference = alone.GetSitesOutput().GetFieldData().GetArray("Energy").GetValue(0)
     # The ranks share the cell integrals; each cell is integrated by one rank, so the sites and
     # energy are those of one process, to the bit.
-    shared = servermanager.Fetch(image).GetFieldData().GetArray("EngineRanks").GetValue(0)
-    check("image: cell sums shared by %d ranks" % shared, shared == ranks)
-    check("image: energy %.17g (alone %.17g)" % (energy, reference), energy == reference)
+    check_shared_sums("image", image, alone, ranks, 0.0)
 
     # The same on the OpenGL engine, each rank reducing its band of rows.
     image = CVTImage(Input=Wavelet(WholeExtent=extent), Density=["POINTS", "RTData"],
