@@ -2,12 +2,17 @@
 
 #include "vtkCVTJumpFloodFS.h"
 #include "vtkCVTOpenGLHelpers.h"
+#include "vtkCVTPassThroughFS.h"
+#include "vtkCVTSeedVS.h"
 
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <vector>
@@ -75,6 +80,59 @@ int vtkCVTJumpFlooding::FullStep(int width, int height)
 }
 
 //------------------------------------------------------------------------------
+int vtkCVTJumpFlooding::Seed(vtkOpenGLRenderWindow* window, vtkTextureObject* sites,
+  const int slotSize[2], int numberOfSites, const int gridSize[2],
+  const std::function<void(vtkShaderProgram*)>& setUniforms)
+{
+  vtkShaderProgram* seed =
+    cvtgl::ReadyProgram(window, vtkCVTSeedVS, vtkCVTPassThroughFS, this->Distance);
+  if (!seed)
+  {
+    return -1;
+  }
+  vtkOpenGLState* state = window->GetState();
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  sites->Activate();
+  seed->SetUniformi("sites", sites->GetTextureUnit());
+  seed->SetUniform2i("slotSize", slotSize);
+  seed->SetUniform2i("gridSize", gridSize);
+  seed->SetUniformi("numberOfSites", numberOfSites);
+  setUniforms(seed);
+  this->EmptyVertexArray->Bind();
+  // Pass 0 into texture 0, cleared to "no site" (every component -1, whatever the layout);
+  // pass 1 into texture 1, starting from pass 0's seeds.
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    this->Framebuffers[pass]->Bind();
+    this->Framebuffers[pass]->ActivateDrawBuffers(1);
+    if (pass == 0)
+    {
+      state->vtkglClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
+    }
+    else
+    {
+      this->Framebuffers[0]->Bind(GL_READ_FRAMEBUFFER);
+      this->Framebuffers[0]->ActivateReadBuffer(0);
+      state->vtkglBlitFramebuffer(0, 0, gridSize[0], gridSize[1], 0, 0, gridSize[0], gridSize[1],
+        GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      this->Textures[0]->Activate();
+      seed->SetUniformi("placed", this->Textures[0]->GetTextureUnit());
+    }
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(pass == 0 ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_DEPTH_BUFFER_BIT);
+    seed->SetUniformi("secondChance", pass);
+    glDrawArrays(GL_POINTS, 0, numberOfSites);
+  }
+  this->Textures[0]->Deactivate();
+  this->EmptyVertexArray->Release();
+  sites->Deactivate();
+  state->vtkglDisable(GL_DEPTH_TEST);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkCVTJumpFlooding::Flood(vtkOpenGLRenderWindow* window, int seeded, int initialStep,
   const int gridSize[2], const std::function<void(vtkShaderProgram*)>& setUniforms)
 {
@@ -114,6 +172,7 @@ void vtkCVTJumpFlooding::Release(vtkOpenGLRenderWindow* window)
     this->Textures[i]->ReleaseGraphicsResources(window);
     this->Framebuffers[i]->ReleaseGraphicsResources(window);
   }
+  this->EmptyVertexArray->ReleaseGraphicsResources();
   if (this->Quad)
   {
     this->Quad->ReleaseGraphicsResources(window);

@@ -1,7 +1,7 @@
 // Private to CVT::Rendering: the jump flooding pass (1+JFA, Rong et al. 2011) shared by the
 // OpenGL engines. It owns two ping-pong float textures with their framebuffers and the quad
-// program; the distance is a GLSL snippet spliced into vtkCVTJumpFloodFS.glsl (the plane's or
-// the geometry image's), and the engines seed the textures with their own shaders.
+// program; the distance is a GLSL snippet spliced into vtkCVTSeedVS.glsl and
+// vtkCVTJumpFloodFS.glsl (the plane's or the geometry image's).
 //
 // It also chooses the initial step (Rong 3.1): the full one (half the next power of two of the
 // grid side) until sites are known to be spread, then the smallest power of two that reaches
@@ -19,6 +19,7 @@
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 class vtkTextureObject;
 
@@ -62,6 +63,16 @@ public:
   /// The step that reaches across the whole grid: half the power of two at or above its side.
   static int FullStep(int width, int height);
 
+  /// Draws one seed per site into the pixel that holds it (the slot texture `sites`, read
+  /// through the distance's cvtSeedPixel and cvtSeedTexel): the lowest id wins a shared pixel,
+  /// and a site that lost its pixel gets a free neighbouring one that takes part, so no site
+  /// is dropped. `setUniforms` sets the distance's own uniforms (and activates its textures).
+  /// The caller sets the viewport and saves the depth state. Returns the texture that holds
+  /// the seeds, -1 when the shader did not compile.
+  int Seed(vtkOpenGLRenderWindow* window, vtkTextureObject* sites, const int slotSize[2],
+    int numberOfSites, const int gridSize[2],
+    const std::function<void(vtkShaderProgram*)>& setUniforms);
+
   /// 1+JFA from the seeds in texture `seeded`: one pass of step 1, then initialStep,
   /// initialStep / 2, ..., 1, each pixel keeping its nearest site. `setUniforms` sets the
   /// distance's own uniforms (and activates its textures). The caller sets the viewport and
@@ -70,7 +81,7 @@ public:
   int Flood(vtkOpenGLRenderWindow* window, int seeded, int initialStep, const int gridSize[2],
     const std::function<void(vtkShaderProgram*)>& setUniforms);
 
-  /// Frees the textures, framebuffers and program.
+  /// Frees the textures, framebuffers, vertex array and program.
   void Release(vtkOpenGLRenderWindow* window);
 
 private:
@@ -82,6 +93,7 @@ private:
   int Fallbacks = 0;
   vtkNew<vtkTextureObject> Textures[2];
   vtkNew<vtkOpenGLFramebufferObject> Framebuffers[2];
+  vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray; // the seeds are drawn from gl_VertexID
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
 };
 

@@ -10,18 +10,15 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include "vtkCVTCollectFS.h"
 #include "vtkCVTLloydFS.h"
-#include "vtkCVTPassThroughFS.h"
 #include "vtkCVTPlaneDistance.h"
 #include "vtkCVTReduceFS.h"
 #include "vtkCVTReduceVS.h"
-#include "vtkCVTSeedVS.h"
 #include "vtkCVTSiteSlots.h"
 #include "vtkCVTSplitPixelsFS.h"
 
@@ -49,7 +46,6 @@ struct vtkCVTOpenGLEngine::Internals
   vtkCVTSlotReduction Reduction{ { { 4, vtkCVTSlotReduction::Blend::Sum },
     { 1, vtkCVTSlotReduction::Blend::Maximum } } };
   vtkNew<vtkOpenGLFramebufferObject> SplitFramebuffer;
-  vtkNew<vtkOpenGLVertexArrayObject> EmptyVertexArray; // attribute-less point draws
   std::unique_ptr<vtkOpenGLQuadHelper> SplitQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CollectQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> LloydQuad;
@@ -67,7 +63,6 @@ struct vtkCVTOpenGLEngine::Internals
     this->SplitFramebuffer->ReleaseGraphicsResources(window);
     this->Reduction.Release(window);
     this->Sites.Release(window);
-    this->EmptyVertexArray->ReleaseGraphicsResources();
     for (auto* quad : { &this->SplitQuad, &this->CollectQuad, &this->LloydQuad })
     {
       if (*quad)
@@ -228,71 +223,28 @@ bool vtkCVTOpenGLEngine::Label(int initialStep)
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFunction(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   state->PushFramebufferBindings();
 
-  // Seed: clear to "no site", then one point per site (lowest id wins a shared pixel), then
-  // a second chance in a free neighbouring pixel for the sites that lost theirs.
-  vtkShaderProgram* seed = ReadyProgram(window, vtkCVTSeedVS, vtkCVTPassThroughFS);
-  if (!seed)
-  {
-    state->PopFramebufferBindings();
-    return this->Fail("the seed shader did not compile");
-  }
-  vtkOpenGLState::ScopedglDepthFunc depthFunction(state);
-  vtkOpenGLState::ScopedglDepthMask depthMask(state);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglDepthMask(GL_TRUE);
-  in.Sites.GetCurrent()->Activate();
-  seed->SetUniformi("sites", in.Sites.GetCurrent()->GetTextureUnit());
-  seed->SetUniform2i("slotSize", in.Sites.GetSlotSize());
-  seed->SetUniform2i("gridSize", this->GridSize);
-  seed->SetUniformi("numberOfSites", in.Sites.GetNumberOfSites());
-  in.EmptyVertexArray->Bind();
-  for (int pass = 0; pass < 2; ++pass)
-  {
-    this->Flooding->GetFramebuffer(pass)->Bind();
-    this->Flooding->GetFramebuffer(pass)->ActivateDrawBuffers(1);
-    if (pass == 0)
-    {
-      state->vtkglClearColor(0.0f, 0.0f, -1.0f, 0.0f);
-      state->vtkglClearDepth(1.0);
-      state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    }
-    else
-    {
-      // Start from the first pass's seeds.
-      this->Flooding->GetFramebuffer(0)->Bind(GL_READ_FRAMEBUFFER);
-      this->Flooding->GetFramebuffer(0)->ActivateReadBuffer(0);
-      state->vtkglBlitFramebuffer(0, 0, this->GridSize[0], this->GridSize[1], 0, 0,
-        this->GridSize[0], this->GridSize[1], GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      state->vtkglClearDepth(1.0);
-      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-      this->Flooding->GetTexture(0)->Activate();
-      seed->SetUniformi("placed", this->Flooding->GetTexture(0)->GetTextureUnit());
-    }
-    seed->SetUniformi("secondChance", pass);
-    glDrawArrays(GL_POINTS, 0, in.Sites.GetNumberOfSites());
-  }
-  this->Flooding->GetTexture(0)->Deactivate();
-  in.EmptyVertexArray->Release();
-  in.Sites.GetCurrent()->Deactivate();
-  state->vtkglDisable(GL_DEPTH_TEST);
-
-  // 1+JFA from the seeds in texture 1.
-  const int labelled = this->Flooding->Flood(window, 1, initialStep, this->GridSize,
-    [this](vtkShaderProgram* jump) { jump->SetUniform2f("metric", this->Metric); });
+  // Seed, then 1+JFA from the seeds.
+  const auto planeUniforms = [this](vtkShaderProgram* program)
+  { program->SetUniform2f("metric", this->Metric); };
+  const int seeded = this->Flooding->Seed(window, in.Sites.GetCurrent(), in.Sites.GetSlotSize(),
+    in.Sites.GetNumberOfSites(), this->GridSize, planeUniforms);
+  const int labelled = seeded < 0
+    ? -1
+    : this->Flooding->Flood(window, seeded, initialStep, this->GridSize, planeUniforms);
+  state->PopFramebufferBindings();
   if (labelled < 0)
   {
-    state->PopFramebufferBindings();
-    return this->Fail("the jump flooding shader did not compile");
+    return this->Fail("the seed or jump flooding shader did not compile");
   }
   in.CurrentSeeds = labelled;
-  state->PopFramebufferBindings();
   return this->CheckGLError("jump flooding");
 }
 

@@ -101,10 +101,10 @@ std::string SpliceShader(const char* source, const char* distance)
 }
 
 vtkShaderProgram* ReadyProgram(
-  vtkOpenGLRenderWindow* window, const char* vertex, const char* fragment)
+  vtkOpenGLRenderWindow* window, const char* vertex, const char* fragment, const char* distance)
 {
   return window->GetShaderCache()->ReadyShaderProgram(
-    SpliceShader(vertex).c_str(), SpliceShader(fragment).c_str(), "");
+    SpliceShader(vertex, distance).c_str(), SpliceShader(fragment).c_str(), "");
 }
 
 /// Creates a full-screen quad program on first use and binds it; nullptr if it did not compile.

@@ -50,9 +50,10 @@ bool AttachTargets(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindo
 std::string SpliceShader(const char* source, const char* distance = nullptr);
 
 /// Compiles (once; VTK's shader cache keeps it) and binds a point-drawing program of spliced
-/// sources; nullptr if it did not compile.
-vtkShaderProgram* ReadyProgram(
-  vtkOpenGLRenderWindow* window, const char* vertex, const char* fragment);
+/// sources (the distance, when given, goes into the vertex shader); nullptr if it did not
+/// compile.
+vtkShaderProgram* ReadyProgram(vtkOpenGLRenderWindow* window, const char* vertex,
+  const char* fragment, const char* distance = nullptr);
 
 /// Creates a full-screen quad program of a spliced fragment shader on first use and binds it;
 /// nullptr if it did not compile.

@@ -22,7 +22,6 @@
 #include "vtkCVTSurfaceNearestVS.h"
 #include "vtkCVTSurfaceReduceFS.h"
 #include "vtkCVTSurfaceReduceVS.h"
-#include "vtkCVTSurfaceSeedVS.h"
 
 #include <algorithm>
 #include <climits>
@@ -264,41 +263,26 @@ bool vtkCVTSurfaceEngine::Label(int initialStep)
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   state->PushFramebufferBindings();
 
-  // Seed: each site in its pixel, the lowest id winning a shared pixel.
-  vtkShaderProgram* seed = ReadyProgram(window, vtkCVTSurfaceSeedVS, vtkCVTPassThroughFS);
-  if (!seed)
-  {
-    state->PopFramebufferBindings();
-    return this->Fail("the surface seed shader did not compile");
-  }
-  state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
-  BindForNearestScatter(this->Flooding->GetFramebuffer(0), window);
-  in.Sites.GetCurrent()->Activate();
-  seed->SetUniformi("sites", in.Sites.GetCurrent()->GetTextureUnit());
-  seed->SetUniform2i("slotSize", in.Sites.GetSlotSize());
-  seed->SetUniform2i("gridSize", this->GridSize);
-  seed->SetUniformi("numberOfSites", in.Sites.GetNumberOfSites());
-  in.EmptyVertexArray->Bind();
-  glDrawArrays(GL_POINTS, 0, in.Sites.GetNumberOfSites());
-  in.EmptyVertexArray->Release();
-  in.Sites.GetCurrent()->Deactivate();
-  state->vtkglDisable(GL_DEPTH_TEST);
-
-  // 1+JFA from the seeds in texture 0.
+  // Seed, then 1+JFA from the seeds.
   in.Positions->Activate();
-  const int labelled = this->Flooding->Flood(window, 0, initialStep, this->GridSize,
-    [this](vtkShaderProgram* jump)
-    {
-      jump->SetUniformi("positions", this->Internal->Positions->GetTextureUnit());
-      jump->SetUniform2i("wrap", this->Wrap);
-    });
+  const auto surfaceUniforms = [this](vtkShaderProgram* program)
+  {
+    program->SetUniformi("positions", this->Internal->Positions->GetTextureUnit());
+    program->SetUniform2i("wrap", this->Wrap);
+  };
+  const int seeded = this->Flooding->Seed(window, in.Sites.GetCurrent(), in.Sites.GetSlotSize(),
+    in.Sites.GetNumberOfSites(), this->GridSize, surfaceUniforms);
+  const int labelled = seeded < 0
+    ? -1
+    : this->Flooding->Flood(window, seeded, initialStep, this->GridSize, surfaceUniforms);
   in.Positions->Deactivate();
   state->PopFramebufferBindings();
   if (labelled < 0)
   {
-    return this->Fail("the surface jump flooding shader did not compile");
+    return this->Fail("the surface seed or jump flooding shader did not compile");
   }
   in.CurrentSeeds = labelled;
   return this->CheckGLError("surface jump flooding");

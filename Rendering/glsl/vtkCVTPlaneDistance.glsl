@@ -1,6 +1,7 @@
 // Jump flooding in the plane (spliced in at //CVT::Distance::Dec): texels hold (site x, site y,
 // site id, 0) in grid units, distances are measured from pixel centres in physical units
 // (metric: the size of one pixel), every pixel takes part and borders are not identified.
+// Site slots hold (x, y) in grid units.
 uniform vec2 metric;
 const vec4 cvtNoSite = vec4(0.0, 0.0, -1.0, 0.0);
 
@@ -23,4 +24,14 @@ float cvtDistance2(vec4 site, vec4 here)
 {
   vec2 d = (site.xy - here.xy) * metric;
   return dot(d, d);
+}
+
+ivec2 cvtSeedPixel(vec4 slot)
+{
+  return clamp(ivec2(floor(slot.xy)), ivec2(0), gridSize - 1);
+}
+
+vec4 cvtSeedTexel(vec4 slot, float id)
+{
+  return vec4(slot.xy, id, 0.0);
 }

@@ -1,12 +1,14 @@
 //VTK::System::Dec
 //CVT::Slots::Dec
-// Seeds the jump flooding: one point per site, drawn into the pixel that holds the site.
-// Sites keep their float positions; the pixel only says where the flooding starts from.
+// Seeds the jump flooding: one point per site, drawn into the pixel that holds the site. The
+// texel layout, the site's pixel and which pixels take part come from the distance snippet
+// (plane or geometry image). Sites keep their float positions; the pixel only says where the
+// flooding starts from.
 //
 // Two sites can fall in one pixel. The first pass keeps the lowest id there (depth test);
-// the second pass gives every site that lost its pixel a free neighbouring pixel, so that
-// it is not dropped from the diagram.
-uniform sampler2D sites;  // site i's slot: (x, y) in grid units
+// the second pass gives every site that lost its pixel the nearest free neighbouring pixel
+// that takes part, so that it is not dropped from the diagram.
+uniform sampler2D sites;  // site i's slot, read by cvtSeedPixel and cvtSeedTexel
 uniform sampler2D placed; // second pass: the first pass's seeds
 uniform ivec2 slotSize;
 uniform ivec2 gridSize;
@@ -14,24 +16,33 @@ uniform int numberOfSites;
 uniform int secondChance; // 0: first pass; 1: re-place the sites that lost their pixel
 out vec4 result;
 
+//CVT::Distance::Dec
+
 void main()
 {
   int i = gl_VertexID;
-  vec2 site = texelFetch(sites, cvtSlotTexel(i, slotSize), 0).xy;
-  ivec2 pixel = clamp(ivec2(floor(site)), ivec2(0), gridSize - 1);
-  result = vec4(site, float(i), 0.0);
+  vec4 slot = texelFetch(sites, cvtSlotTexel(i, slotSize), 0);
+  ivec2 pixel = cvtSeedPixel(slot);
+  result = cvtSeedTexel(slot, float(i));
   float depth = cvtIdDepth(i, numberOfSites); // lower id wins
   if (secondChance == 1)
   {
-    bool lost = texelFetch(placed, pixel, 0).z != float(i);
+    // The free neighbour nearest to the site: the one the site's own cell most likely holds.
+    bool lost = cvtSiteId(texelFetch(placed, pixel, 0)) != float(i);
     ivec2 free = ivec2(-1);
-    for (int k = 0; k < 9 && lost && free.x < 0; ++k)
+    float nearest = 3.0e38;
+    for (int k = 0; k < 9 && lost; ++k)
     {
-      ivec2 q = pixel + ivec2(k % 3 - 1, k / 3 - 1);
-      if (q.x >= 0 && q.y >= 0 && q.x < gridSize.x && q.y < gridSize.y &&
-        texelFetch(placed, q, 0).z < 0.0)
+      ivec2 q = cvtWrap(pixel + ivec2(k % 3 - 1, k / 3 - 1));
+      if (q.x >= 0 && q.y >= 0 && q.x < gridSize.x && q.y < gridSize.y)
       {
-        free = q;
+        vec4 here = cvtPixel(q);
+        float distance2 = cvtDistance2(result, here);
+        if (here.w > 0.0 && cvtSiteId(texelFetch(placed, q, 0)) < 0.0 && distance2 < nearest)
+        {
+          free = q;
+          nearest = distance2;
+        }
       }
     }
     if (free.x < 0)

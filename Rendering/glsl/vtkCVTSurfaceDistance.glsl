@@ -1,6 +1,7 @@
 // Jump flooding on a geometry image (spliced in at //CVT::Distance::Dec): texels hold (site x,
 // y, z, id), distances are 3D Euclidean distances from the pixel's surface point, borders
-// identified by the wrap flags are neighbours, and masked pixels (w = 0) take no part.
+// identified by the wrap flags are neighbours, and masked pixels (w = 0) take no part. Site
+// slots hold (x, y, z, index of the pixel that holds the site).
 uniform sampler2D positions; // (x, y, z, valid)
 uniform ivec2 wrap;          // (wrap u, wrap v)
 const vec4 cvtNoSite = vec4(0.0, 0.0, 0.0, -1.0);
@@ -28,4 +29,15 @@ float cvtDistance2(vec4 site, vec4 here)
 {
   vec3 d = site.xyz - here.xyz;
   return dot(d, d);
+}
+
+ivec2 cvtSeedPixel(vec4 slot)
+{
+  int pixel = int(slot.w);
+  return ivec2(pixel % gridSize.x, pixel / gridSize.x);
+}
+
+vec4 cvtSeedTexel(vec4 slot, float id)
+{
+  return vec4(slot.xyz, id);
 }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -207,4 +208,67 @@ TEST(SurfaceEngine, SafeguardFallsBackWhenSitesJump)
   std::cout << "[ measured ] surface safeguard: " << wrong << " of " << gi.NumberOfPixels()
             << " mislabelled after the fallback\n";
   EXPECT_LE(wrong, gi.NumberOfPixels() / 200);
+}
+
+TEST(SurfaceEngine, SitesSharingAPixelKeepTheirCells)
+{
+  // Pairs of sites given the same pixel (one pair on the wrapped column): the lower id wins
+  // the pixel, and the other, nearer to the next pixel, must still get the pixels its cell
+  // holds (seeded in the nearest free neighbour), as in the plane.
+  const cvt::GeometryImage gi = TorusGeometryImage(128, 64);
+  std::vector<long long> pixels;
+  std::vector<double> sites = cvt::SampleSurfaceSites(gi, 40, 6, pixels);
+  const long long sharedPixel[3] = { 20 * 128 + 40, 40 * 128 + 64, 5 * 128 + 127 };
+  for (int k = 0; k < 3; ++k)
+  {
+    const long long p = sharedPixel[k];
+    const long long next = p - p % 128 + (p + 1) % 128; // the pixel to the right, wrapped
+    for (int j = 0; j < 2; ++j)
+    {
+      const int s = 2 * k + j;
+      pixels[s] = p;
+      for (int c = 0; c < 3; ++c)
+      {
+        sites[3 * s + c] =
+          gi.Position[3 * p + c] + 0.45 * j * (gi.Position[3 * next + c] - gi.Position[3 * p + c]);
+      }
+    }
+  }
+  vtkNew<vtkCVTSurfaceEngine> engine;
+  ASSERT_TRUE(engine->SetGeometryImage(gi)) << engine->GetLastError();
+  ASSERT_TRUE(engine->SetSites(sites, pixels)) << engine->GetLastError();
+  cvt::CellSums sums;
+  ASSERT_TRUE(engine->ComputeCellSums(sums)) << engine->GetLastError();
+  std::vector<int> labels;
+  ASSERT_TRUE(engine->GetLabels(labels));
+  // Brute force: how many pixels each site's cell holds.
+  std::vector<int> owned(40, 0);
+  for (long long p = 0; p < gi.NumberOfPixels(); ++p)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    int nearest = -1;
+    for (int s = 0; s < 40; ++s)
+    {
+      double d2 = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        d2 += std::pow(gi.Position[3 * p + c] - sites[3 * s + c], 2);
+      }
+      if (d2 < best)
+      {
+        best = d2;
+        nearest = s;
+      }
+    }
+    ++owned[nearest];
+  }
+  for (int s = 0; s < 6; ++s)
+  {
+    ASSERT_GT(owned[s], 0) << "site " << s << ": the test's pairs must both own pixels";
+  }
+  for (int s = 0; s < 40; ++s)
+  {
+    EXPECT_GT(sums.Mass[s], 0.0) << "site " << s << " lost its cell of " << owned[s] << " pixels";
+  }
+  EXPECT_LE(CountSurfaceMislabels(gi, sites, labels), gi.NumberOfPixels() / 200);
 }
