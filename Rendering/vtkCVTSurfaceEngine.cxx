@@ -426,7 +426,8 @@ bool vtkCVTSurfaceEngine::NearestPointsInCells(
   {
     return this->Fail("the GPU could not allocate the target texture");
   }
-  vtkShaderProgram* nearest = ReadyQuad(in.NearestQuad, window, vtkCVTSurfaceNearestFS);
+  vtkShaderProgram* nearest =
+    ReadyQuad(in.NearestQuad, window, vtkCVTSurfaceNearestFS, vtkCVTSurfaceDistance);
   vtkShaderProgram* scatter =
     nearest ? ReadyProgram(window, vtkCVTSurfaceNearestVS, vtkCVTPassThroughFS) : nullptr;
   if (!nearest || !scatter)

@@ -14,7 +14,7 @@ out float cellRadius; // distance from the site to this pixel's centre, in pixel
 
 void main()
 {
-  ivec2 p = ivec2(gl_VertexID % gridSize.x, gl_VertexID / gridSize.x);
+  ivec2 p = cvtVertexPixel(gl_VertexID, gridSize);
   vec4 seed = texelFetch(seeds, p, 0);
   int id = int(seed.z);
   if (id < 0)

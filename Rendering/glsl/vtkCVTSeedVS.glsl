@@ -47,7 +47,7 @@ void main()
     }
     if (free.x < 0)
     {
-      gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // placed already (or no room): culled
+      gl_Position = cvtCulled; // placed already, or no room
       return;
     }
     pixel = free;

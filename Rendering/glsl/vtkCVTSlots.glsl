@@ -16,3 +16,12 @@ float cvtIdDepth(int id, int n)
 {
   return (float(id) + 0.5) / float(n) * 2.0 - 1.0;
 }
+
+// The pixel of vertex `vertexId` in a draw of one point per pixel of a grid, row by row.
+ivec2 cvtVertexPixel(int vertexId, ivec2 gridSize)
+{
+  return ivec2(vertexId % gridSize.x, vertexId / gridSize.x);
+}
+
+// A clip-space position outside the view volume: the point is dropped.
+const vec4 cvtCulled = vec4(2.0, 2.0, 2.0, 1.0);

@@ -7,13 +7,13 @@
 // per cell by the depth test.
 //   gl_FragData[0] = (nearest point, distance), distance < 0: no candidate here
 //   gl_FragData[1] = (index of the quad corner nearest to that point, 0, 0, 0)
-uniform sampler2D seeds;     // (site x, y, z, id)
-uniform sampler2D positions; // (x, y, z, valid)
-uniform sampler2D targets;   // slot i: target of site i
+uniform sampler2D seeds;   // (site x, y, z, id)
+uniform sampler2D targets; // slot i: target of site i
 uniform ivec2 gridSize;
 uniform ivec2 slotSize;
-uniform ivec2 wrap;
 in vec2 texCoord;
+
+//CVT::Distance::Dec
 
 // Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
 vec3 closestOnTriangle(vec3 p, vec3 a, vec3 b, vec3 c)
@@ -43,16 +43,6 @@ vec3 closestOnTriangle(vec3 p, vec3 a, vec3 b, vec3 c)
   return a + ab * (vb * denominator) + ac * (vc * denominator);
 }
 
-ivec2 neighbour(ivec2 p, ivec2 d)
-{
-  ivec2 q = p + d;
-  if (wrap.x != 0)
-    q.x = (q.x % gridSize.x + gridSize.x) % gridSize.x;
-  if (wrap.y != 0)
-    q.y = (q.y % gridSize.y + gridSize.y) % gridSize.y;
-  return q;
-}
-
 bool inside(ivec2 q)
 {
   return q.x >= 0 && q.y >= 0 && q.x < gridSize.x && q.y < gridSize.y;
@@ -66,9 +56,9 @@ void main()
   float id = texelFetch(seeds, p, 0).w;
   ivec2 corner[4];
   corner[0] = p;
-  corner[1] = neighbour(p, ivec2(1, 0));
-  corner[2] = neighbour(p, ivec2(1, 1));
-  corner[3] = neighbour(p, ivec2(0, 1));
+  corner[1] = cvtWrap(p + ivec2(1, 0));
+  corner[2] = cvtWrap(p + ivec2(1, 1));
+  corner[3] = cvtWrap(p + ivec2(0, 1));
   vec4 x[4];
   bool valid = id >= 0.0;
   for (int k = 0; k < 4; ++k)

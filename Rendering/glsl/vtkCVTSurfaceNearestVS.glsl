@@ -12,13 +12,13 @@ out vec4 result; // (point, pixel index)
 
 void main()
 {
-  ivec2 p = ivec2(gl_VertexID % gridSize.x, gl_VertexID / gridSize.x);
+  ivec2 p = cvtVertexPixel(gl_VertexID, gridSize);
   vec4 candidate = texelFetch(nearest, p, 0);
   float id = texelFetch(seeds, p, 0).w;
   result = vec4(candidate.xyz, texelFetch(corners, p, 0).r);
   if (candidate.w < 0.0 || id < 0.0)
   {
-    gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // culled
+    gl_Position = cvtCulled;
     return;
   }
   int i = int(id);

@@ -16,7 +16,7 @@ out float cellRadius; // pixels from the site's pixel
 
 void main()
 {
-  ivec2 p = ivec2(gl_VertexID % gridSize.x, gl_VertexID / gridSize.x);
+  ivec2 p = cvtVertexPixel(gl_VertexID, gridSize);
   vec4 seed = texelFetch(seeds, p, 0);
   vec4 here = texelFetch(positions, p, 0);
   if (seed.w < 0.0 && here.w > 0.0)
@@ -31,7 +31,7 @@ void main()
   }
   if (seed.w < 0.0 || here.w <= 0.0)
   {
-    gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // culled
+    gl_Position = cvtCulled;
     cellSums = vec4(0.0);
     cellEnergy = 0.0;
     cellRadius = 0.0;
