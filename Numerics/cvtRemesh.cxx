@@ -863,6 +863,9 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceM
     std::fill(changed.begin(), changed.end(), 0);
     std::sort(order.begin(), order.end(), std::greater<>());
     int movedThisPass = 0;
+    // The 10% gain is measured against the distance at the start of the pass, even where a
+    // neighbour's move since then brought v's points in: measuring it again stopped moves that
+    // help (bunny at 1000 sites: Hausdorff 0.97% -> 1.25% of the diagonal).
     for (const auto& [ownBefore, v] : order)
     {
       int far = -1;
