@@ -43,6 +43,19 @@ int CountSurfaceMislabels(
   }
   return wrong;
 }
+
+/// One labelling and reduction of `sites` by a new engine: the sums and every pixel's label.
+::testing::AssertionResult LabelOnce(const cvt::GeometryImage& gi, const std::vector<double>& sites,
+  const std::vector<long long>& pixels, cvt::CellSums& sums, std::vector<int>& labels)
+{
+  vtkNew<vtkCVTSurfaceEngine> engine;
+  if (!engine->SetGeometryImage(gi) || !engine->SetSites(sites, pixels) ||
+    !engine->ComputeCellSums(sums) || !engine->GetLabels(labels))
+  {
+    return ::testing::AssertionFailure() << engine->GetLastError();
+  }
+  return ::testing::AssertionSuccess();
+}
 }
 
 TEST(SurfaceEngine, LabelsAndSumsMatchTheCpu)
@@ -52,13 +65,9 @@ TEST(SurfaceEngine, LabelsAndSumsMatchTheCpu)
   const cvt::GeometryImage gi = TorusGeometryImage(128, 64);
   std::vector<long long> pixels;
   const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 200, 3, pixels);
-  vtkNew<vtkCVTSurfaceEngine> engine;
-  ASSERT_TRUE(engine->SetGeometryImage(gi)) << engine->GetLastError();
-  ASSERT_TRUE(engine->SetSites(sites, pixels)) << engine->GetLastError();
   cvt::CellSums sums;
-  ASSERT_TRUE(engine->ComputeCellSums(sums)) << engine->GetLastError();
   std::vector<int> labels;
-  ASSERT_TRUE(engine->GetLabels(labels));
+  ASSERT_TRUE(LabelOnce(gi, sites, pixels, sums, labels));
 
   // Brute force: the nearest site in 3D of every pixel; and the weighted sums over the GPU's
   // labels (so that the reduction is checked on its own).
@@ -234,13 +243,9 @@ TEST(SurfaceEngine, SitesSharingAPixelKeepTheirCells)
       }
     }
   }
-  vtkNew<vtkCVTSurfaceEngine> engine;
-  ASSERT_TRUE(engine->SetGeometryImage(gi)) << engine->GetLastError();
-  ASSERT_TRUE(engine->SetSites(sites, pixels)) << engine->GetLastError();
   cvt::CellSums sums;
-  ASSERT_TRUE(engine->ComputeCellSums(sums)) << engine->GetLastError();
   std::vector<int> labels;
-  ASSERT_TRUE(engine->GetLabels(labels));
+  ASSERT_TRUE(LabelOnce(gi, sites, pixels, sums, labels));
   // Brute force: how many pixels each site's cell holds.
   std::vector<int> owned(40, 0);
   for (long long p = 0; p < gi.NumberOfPixels(); ++p)
