@@ -264,9 +264,10 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
 bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image,
   long long valid, const std::string& reason, vtkInformationVector* outputVector)
 {
-  // About 60 triangles per site: the restricted cells are exact on the triangles, which differ
-  // from the surface by their chords only.
-  const double wanted = std::max(20000.0, 60.0 * this->NumberOfSites);
+  // About 20 triangles per site: the restricted cells are exact on the triangles, which differ
+  // from the surface by their chords only (torus at 1000 sites: energy on a dense image -0.29%
+  // from Geogram's, where 60 per site gave -0.14%, at two thirds of the time).
+  const double wanted = std::max(20000.0, 20.0 * this->NumberOfSites);
   const int stride = std::max(1, static_cast<int>(std::floor(std::sqrt(2.0 * valid / wanted))));
   std::vector<double> coordinates;
   std::vector<std::array<int, 3>> triangles;
