@@ -90,41 +90,31 @@ int vtkCVTJumpFlooding::Seed(vtkOpenGLRenderWindow* window, vtkTextureObject* si
   {
     return -1;
   }
-  vtkOpenGLState* state = window->GetState();
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglDepthMask(GL_TRUE);
+  // Pass 0 into texture 0: one seed per site, the lowest id winning a shared pixel.
+  cvtgl::BindForNearestScatter(this->Framebuffers[0], window);
   sites->Activate();
   seed->SetUniformi("sites", sites->GetTextureUnit());
   seed->SetUniform2i("slotSize", slotSize);
   seed->SetUniform2i("gridSize", gridSize);
   seed->SetUniformi("numberOfSites", numberOfSites);
   setUniforms(seed);
+  seed->SetUniformi("secondChance", 0);
   this->EmptyVertexArray->Bind();
-  // Pass 0 into texture 0, cleared to "no site" (every component -1, whatever the layout);
-  // pass 1 into texture 1, starting from pass 0's seeds.
-  for (int pass = 0; pass < 2; ++pass)
-  {
-    this->Framebuffers[pass]->Bind();
-    this->Framebuffers[pass]->ActivateDrawBuffers(1);
-    if (pass == 0)
-    {
-      state->vtkglClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
-    }
-    else
-    {
-      this->Framebuffers[0]->Bind(GL_READ_FRAMEBUFFER);
-      this->Framebuffers[0]->ActivateReadBuffer(0);
-      state->vtkglBlitFramebuffer(0, 0, gridSize[0], gridSize[1], 0, 0, gridSize[0], gridSize[1],
-        GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      this->Textures[0]->Activate();
-      seed->SetUniformi("placed", this->Textures[0]->GetTextureUnit());
-    }
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(pass == 0 ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_DEPTH_BUFFER_BIT);
-    seed->SetUniformi("secondChance", pass);
-    glDrawArrays(GL_POINTS, 0, numberOfSites);
-  }
+  glDrawArrays(GL_POINTS, 0, numberOfSites);
+  // Pass 1 into texture 1: pass 0's seeds, then the sites that lost their pixel, each in its
+  // nearest free neighbour.
+  vtkOpenGLState* state = window->GetState();
+  this->Framebuffers[1]->Bind();
+  this->Framebuffers[1]->ActivateDrawBuffers(1);
+  this->Framebuffers[0]->Bind(GL_READ_FRAMEBUFFER);
+  this->Framebuffers[0]->ActivateReadBuffer(0);
+  state->vtkglBlitFramebuffer(0, 0, gridSize[0], gridSize[1], 0, 0, gridSize[0], gridSize[1],
+    GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  this->Textures[0]->Activate();
+  seed->SetUniformi("placed", this->Textures[0]->GetTextureUnit());
+  seed->SetUniformi("secondChance", 1);
+  glDrawArrays(GL_POINTS, 0, numberOfSites);
   this->Textures[0]->Deactivate();
   this->EmptyVertexArray->Release();
   sites->Deactivate();

@@ -159,7 +159,7 @@ void BindForNearestScatter(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRen
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
   state->vtkglDepthMask(GL_TRUE);
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, -1.0f);
+  state->vtkglClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }

@@ -69,7 +69,8 @@ void ReadTarget(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* 
 std::string GLErrorMessage(const char* where);
 
 /// Binds `framebuffer` for drawing into its first target with a less-than depth test, and
-/// clears it to (0, 0, 0, -1) and depth 1: the set-up of every "keep the nearest" scatter.
+/// clears it to -1 in every component ("nothing here", whatever the texel layout) and depth 1:
+/// the set-up of every "keep the nearest" scatter (seeds, constrained centroids).
 void BindForNearestScatter(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window);
 
 } // namespace cvtgl
