@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 //VTK::Output::Dec
 // Regional reduction, step 2 of 3: every pixel adds to its own piece the pieces of its
 // neighbours that belong to its site and name it as their collector (see
@@ -24,7 +25,7 @@ void main()
       for (int dx = -1; dx <= 1; ++dx)
       {
         ivec2 p = q + ivec2(dx, dy);
-        if ((dx == 0 && dy == 0) || p.x < 0 || p.y < 0 || p.x >= gridSize.x || p.y >= gridSize.y)
+        if ((dx == 0 && dy == 0) || !cvtInGrid(p, gridSize))
         {
           continue;
         }

@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 //VTK::Output::Dec
 // One jump flooding pass: every pixel that takes part looks at itself and its 8 neighbours
 // stepLength pixels away and keeps the nearest site seen. The texel layout, the distance and
@@ -21,7 +22,7 @@ void main()
     for (int n = 0; n < 9; ++n)
     {
       ivec2 q = cvtWrap(p + ivec2(n % 3 - 1, n / 3 - 1) * stepLength);
-      if (q.x < 0 || q.y < 0 || q.x >= gridSize.x || q.y >= gridSize.y)
+      if (!cvtInGrid(q, gridSize))
         continue;
       vec4 candidate = texelFetch(seeds, q, 0);
       if (cvtSiteId(candidate) < 0.0)

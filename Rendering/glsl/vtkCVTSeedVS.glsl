@@ -34,7 +34,7 @@ void main()
     for (int k = 0; k < 9 && lost; ++k)
     {
       ivec2 q = cvtWrap(pixel + ivec2(k % 3 - 1, k / 3 - 1));
-      if (q.x >= 0 && q.y >= 0 && q.x < gridSize.x && q.y < gridSize.y)
+      if (cvtInGrid(q, gridSize))
       {
         vec4 here = cvtPixel(q);
         float distance2 = cvtDistance2(result, here);

@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//CVT::Slots::Dec
 //VTK::Output::Dec
 // Regional reduction, step 1 of 3: split every pixel between the sites that may own part of it.
 //
@@ -193,7 +194,7 @@ void main()
   for (int n = 0; n < 9; ++n)
   {
     ivec2 q = p + ivec2(n % 3 - 1, n / 3 - 1);
-    if (n == 4 || count == 0 || q.x < 0 || q.y < 0 || q.x >= gridSize.x || q.y >= gridSize.y)
+    if (n == 4 || count == 0 || !cvtInGrid(q, gridSize))
     {
       continue;
     }

@@ -43,11 +43,6 @@ vec3 closestOnTriangle(vec3 p, vec3 a, vec3 b, vec3 c)
   return a + ab * (vb * denominator) + ac * (vc * denominator);
 }
 
-bool inside(ivec2 q)
-{
-  return q.x >= 0 && q.y >= 0 && q.x < gridSize.x && q.y < gridSize.y;
-}
-
 void main()
 {
   ivec2 p = ivec2(texCoord * vec2(gridSize));
@@ -63,7 +58,7 @@ void main()
   bool valid = id >= 0.0;
   for (int k = 0; k < 4; ++k)
   {
-    valid = valid && inside(corner[k]);
+    valid = valid && cvtInGrid(corner[k], gridSize);
     x[k] = valid ? texelFetch(positions, corner[k], 0) : vec4(0.0);
     valid = valid && x[k].w > 0.0;
   }
