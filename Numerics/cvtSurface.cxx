@@ -135,6 +135,21 @@ std::string CheckGeometryImage(const GeometryImage& image, int numberOfSites)
   {
     return "the geometry image's mask does not hold one value per pixel";
   }
+  if (!image.SeamPartner.empty() && static_cast<long long>(image.SeamPartner.size()) != pixels)
+  {
+    return "the geometry image's seam partners do not hold one value per pixel";
+  }
+  for (size_t p = 0; p < image.SeamPartner.size(); ++p)
+  {
+    const int partner = image.SeamPartner[p];
+    if (partner < -1 || partner >= pixels || (partner >= 0 && !image.IsValid(partner)))
+    {
+      std::ostringstream msg;
+      msg << "pixel " << p << " has a seam partner (" << partner
+          << ") that is not a valid pixel of the image";
+      return msg.str();
+    }
+  }
   long long valid = 0;
   for (long long p = 0; p < pixels; ++p)
   {

@@ -26,6 +26,9 @@ struct GeometryImage
   std::vector<float> Normal;       // 3 per pixel, unit
   std::vector<float> AreaWeight;   // 1 per pixel (the distortion factor)
   std::vector<unsigned char> Mask; // 1 per pixel, 0 = not on the surface; empty = all
+  /// Per pixel of an atlas: the pixel where the surface goes on across a chart border (its seam
+  /// partner), -1 where it does not; empty = no seams.
+  std::vector<int> SeamPartner;
 
   long long NumberOfPixels() const { return static_cast<long long>(this->Width) * this->Height; }
   bool IsValid(long long p) const { return this->Mask.empty() || this->Mask[p] != 0; }

@@ -9,6 +9,7 @@
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSampling.h"
 #include "cvtSurfaceMesh.h"
+#include "cvtTestMeshes.h"
 #include "cvtTwoRanks.h"
 
 #include "vtkSMPTools.h"
@@ -26,106 +27,14 @@
 
 namespace
 {
+using cvttest::FlatSquare;
+using cvttest::Sphere;
+using cvttest::Tube;
+
 /// The smallest corner of a remesh's triangles, in degrees.
 double SmallestAngle(const cvt::Remesh& remesh)
 {
   return cvt::MeasureMesh(remesh.Points, remesh.Triangles).MinimumAngle;
-}
-
-/// The square [lo, hi]^2 at z = 0 as an n x n grid of quads, two triangles each.
-cvt::SurfaceMesh FlatSquare(int n, double lo, double hi)
-{
-  cvt::SurfaceMesh mesh;
-  for (int j = 0; j <= n; ++j)
-  {
-    for (int i = 0; i <= n; ++i)
-    {
-      mesh.Points.insert(
-        mesh.Points.end(), { lo + (hi - lo) * i / n, lo + (hi - lo) * j / n, 0.0 });
-    }
-  }
-  for (int j = 0; j < n; ++j)
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-      mesh.Triangles.push_back({ a, b, c });
-      mesh.Triangles.push_back({ a, c, d });
-    }
-  }
-  return mesh;
-}
-
-/// An open tube of radius `radius` along z from 0 to 1: `around` x `along` quads, two
-/// triangles each.
-cvt::SurfaceMesh Tube(double radius, int around, int along)
-{
-  cvt::SurfaceMesh mesh;
-  for (int j = 0; j <= along; ++j)
-  {
-    for (int i = 0; i < around; ++i)
-    {
-      const double angle = 2.0 * 3.14159265358979323846 * i / around;
-      mesh.Points.insert(mesh.Points.end(),
-        { radius * std::cos(angle), radius * std::sin(angle), static_cast<double>(j) / along });
-    }
-  }
-  for (int j = 0; j < along; ++j)
-  {
-    for (int i = 0; i < around; ++i)
-    {
-      const int a = j * around + i, b = j * around + (i + 1) % around, c = b + around,
-                d = a + around;
-      mesh.Triangles.push_back({ a, b, c });
-      mesh.Triangles.push_back({ a, c, d });
-    }
-  }
-  return mesh;
-}
-
-/// A unit sphere: an octahedron subdivided `levels` times, points pushed onto the sphere.
-cvt::SurfaceMesh Sphere(int levels)
-{
-  cvt::SurfaceMesh mesh;
-  mesh.Points = { 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1 };
-  mesh.Triangles = { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 },
-    { 3, 1, 5 }, { 0, 3, 5 } };
-  for (int level = 0; level < levels; ++level)
-  {
-    std::map<std::pair<int, int>, int> middle;
-    const auto midpoint = [&mesh, &middle](int a, int b)
-    {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      auto found = middle.find(key);
-      if (found != middle.end())
-      {
-        return found->second;
-      }
-      double p[3];
-      double length = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        p[k] = 0.5 * (mesh.Points[3 * a + k] + mesh.Points[3 * b + k]);
-        length += p[k] * p[k];
-      }
-      for (double& c : p)
-      {
-        mesh.Points.push_back(c / std::sqrt(length));
-      }
-      return middle[key] = mesh.NumberOfPoints() - 1;
-    };
-    std::vector<std::array<int, 3>> finer;
-    for (const auto& t : mesh.Triangles)
-    {
-      const int ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
-      finer.push_back({ t[0], ab, ca });
-      finer.push_back({ ab, t[1], bc });
-      finer.push_back({ ca, bc, t[2] });
-      finer.push_back({ ab, bc, ca });
-    }
-    mesh.Triangles = finer;
-  }
-  return mesh;
 }
 
 /// Brute force: every triangle cut into m^2 similar pieces, each given by its centroid to the
@@ -1118,28 +1027,7 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
 TEST(SurfaceMesh, TopologyCountsGenusAndLoops)
 {
   // A torus as a 12 x 8 grid with both borders identified: genus 1.
-  cvt::SurfaceMesh torus;
-  const int nu = 12, nv = 8;
-  for (int i = 0; i < nu; ++i)
-  {
-    for (int j = 0; j < nv; ++j)
-    {
-      const double u = 2 * 3.14159265358979 * i / nu, v = 2 * 3.14159265358979 * j / nv;
-      torus.Points.insert(torus.Points.end(),
-        { (1 + 0.4 * std::cos(v)) * std::cos(u), (1 + 0.4 * std::cos(v)) * std::sin(u),
-          0.4 * std::sin(v) });
-    }
-  }
-  for (int i = 0; i < nu; ++i)
-  {
-    for (int j = 0; j < nv; ++j)
-    {
-      const int a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
-                d = i * nv + (j + 1) % nv;
-      torus.Triangles.push_back({ a, b, c });
-      torus.Triangles.push_back({ a, c, d });
-    }
-  }
+  const cvt::SurfaceMesh torus = cvttest::Torus(1.0, 0.4, 12, 8);
   const cvt::MeshTopology t = cvt::ComputeMeshTopology(torus.NumberOfPoints(), torus.Triangles);
   EXPECT_EQ(t.Components, 1);
   EXPECT_EQ(t.Genus, 1);

@@ -1,0 +1,188 @@
+// The multi-chart atlas of a mesh: charts are disks covering the surface, pixels carry its
+// area, neighbouring pixels of a chart are neighbours on the surface (no fold, no flip), and
+// every chart-border pixel of a closed surface has a seam partner next to it in 3D.
+#include "cvtAtlas.h"
+#include "cvtTestMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+struct Case
+{
+  std::string Name;
+  cvt::SurfaceMesh Mesh;
+  bool Closed;
+};
+
+std::vector<Case> Cases()
+{
+  return { { "sphere", cvttest::Sphere(4), true },
+    { "torus", cvttest::Torus(1.0, 0.4, 64, 24), true },
+    { "tube", cvttest::Tube(0.3, 32, 12), false },
+    { "two parts", cvttest::TwoParts(cvttest::Sphere(3), cvttest::Torus(1.0, 0.3, 40, 16), 3.0),
+      true } };
+}
+
+double Distance(const cvt::GeometryImage& image, long long p, long long q)
+{
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    d2 += std::pow(image.Position[3 * p + k] - image.Position[3 * q + k], 2);
+  }
+  return std::sqrt(d2);
+}
+
+double Area(const cvt::SurfaceMesh& mesh)
+{
+  double area = 0.0;
+  for (const auto& t : mesh.Triangles)
+  {
+    const double* a = mesh.Point(t[0]);
+    const double* b = mesh.Point(t[1]);
+    const double* c = mesh.Point(t[2]);
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    area += 0.5 *
+      std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) + std::pow(u[2] * v[0] - u[0] * v[2], 2) +
+        std::pow(u[0] * v[1] - u[1] * v[0], 2));
+  }
+  return area;
+}
+
+} // namespace
+
+TEST(Atlas, ChartsAreDisksThatCarryTheWholeSurface)
+{
+  for (const Case& c : Cases())
+  {
+    SCOPED_TRACE(c.Name);
+    cvt::AtlasOptions options;
+    options.PixelBudget = 300000;
+    cvt::Atlas atlas;
+    ASSERT_EQ(cvt::BuildAtlas(c.Mesh, options, atlas), "");
+    const cvt::GeometryImage& image = atlas.Image;
+    EXPECT_LE(image.NumberOfPixels(), options.PixelBudget);
+    EXPECT_GT(image.NumberOfPixels(), options.PixelBudget / 2);
+    EXPECT_EQ(cvt::CheckGeometryImage(image, 1), "");
+    EXPECT_GT(atlas.NumberOfCharts, 1);
+    // Every chart a disk: one part, genus 0, one boundary loop.
+    std::vector<std::vector<std::array<int, 3>>> charts(atlas.NumberOfCharts);
+    for (size_t t = 0; t < c.Mesh.Triangles.size(); ++t)
+    {
+      ASSERT_GE(atlas.TriangleChart[t], 0);
+      ASSERT_LT(atlas.TriangleChart[t], atlas.NumberOfCharts);
+      charts[atlas.TriangleChart[t]].push_back(c.Mesh.Triangles[t]);
+    }
+    for (const auto& triangles : charts)
+    {
+      const cvt::MeshTopology topology =
+        cvt::ComputeMeshTopology(c.Mesh.NumberOfPoints(), triangles);
+      ASSERT_EQ(topology.Components, 1);
+      ASSERT_EQ(topology.Genus, 0);
+      ASSERT_EQ(topology.BoundaryLoops, 1);
+    }
+    // The pixels carry the surface's area, and neighbouring pixels of one chart lie a pixel
+    // apart on the surface: no fold, no jump.
+    double weights = 0.0;
+    long long valid = 0;
+    for (long long p = 0; p < image.NumberOfPixels(); ++p)
+    {
+      weights += image.AreaWeight[p];
+      valid += image.IsValid(p) ? 1 : 0;
+    }
+    const double area = Area(c.Mesh);
+    EXPECT_NEAR(weights, area, 1e-4 * area);
+    const double pixel = std::sqrt(area / valid);
+    double farthest = 0.0;
+    for (int j = 0; j < image.Height; ++j)
+    {
+      for (int i = 0; i + 1 < image.Width; ++i)
+      {
+        const long long p = static_cast<long long>(j) * image.Width + i;
+        if (atlas.Chart[p] >= 0 && atlas.Chart[p] == atlas.Chart[p + 1])
+        {
+          farthest = std::max(farthest, Distance(image, p, p + 1));
+        }
+      }
+    }
+    EXPECT_LT(farthest, 4.0 * pixel);
+    EXPECT_GE(atlas.MinimumAreaStretch, 0.2);
+    EXPECT_LE(atlas.MaximumAreaStretch, 5.0);
+    EXPECT_GT(atlas.SeamLength, 0.0);
+  }
+}
+
+TEST(Atlas, BorderPixelsOfAClosedSurfaceContinueAcrossSeams)
+{
+  for (const Case& c : Cases())
+  {
+    SCOPED_TRACE(c.Name);
+    cvt::AtlasOptions options;
+    options.PixelBudget = 300000;
+    cvt::Atlas atlas;
+    ASSERT_EQ(cvt::BuildAtlas(c.Mesh, options, atlas), "");
+    const cvt::GeometryImage& image = atlas.Image;
+    long long valid = 0;
+    for (long long p = 0; p < image.NumberOfPixels(); ++p)
+    {
+      valid += image.IsValid(p) ? 1 : 0;
+    }
+    const double pixel = std::sqrt(Area(c.Mesh) / valid);
+    long long border = 0, continued = 0, far = 0;
+    double farthest = 0.0;
+    for (int j = 1; j + 1 < image.Height; ++j)
+    {
+      for (int i = 1; i + 1 < image.Width; ++i)
+      {
+        const long long p = static_cast<long long>(j) * image.Width + i;
+        const int partner = image.SeamPartner[p];
+        if (partner >= 0)
+        {
+          ASSERT_TRUE(image.IsValid(partner));
+          ASSERT_NE(atlas.Chart[partner], atlas.Chart[p]);
+          farthest = std::max(farthest, Distance(image, p, partner) / pixel);
+          far += Distance(image, p, partner) > 4 * pixel ? 1 : 0;
+        }
+        if (atlas.Chart[p] < 0)
+        {
+          continue;
+        }
+        bool onBorder = false;
+        for (long long q : { p - 1, p + 1, p - image.Width, p + image.Width })
+        {
+          onBorder = onBorder || atlas.Chart[q] != atlas.Chart[p];
+        }
+        border += onBorder ? 1 : 0;
+        continued += onBorder && partner >= 0 ? 1 : 0;
+      }
+    }
+    // Partners are where the surface goes on: a few pixels away in 3D, not across the model.
+    EXPECT_LT(farthest, 6.0) << far << " far of " << continued;
+    ASSERT_GT(border, 0);
+    if (c.Closed)
+    {
+      EXPECT_GE(continued, border * 99 / 100) << continued << " of " << border;
+    }
+    else
+    {
+      EXPECT_LT(continued, border); // the tube's two rims go on nowhere
+    }
+  }
+}
+
+TEST(Atlas, ATooSmallBudgetIsAnError)
+{
+  cvt::AtlasOptions options;
+  options.PixelBudget = 10;
+  cvt::Atlas atlas;
+  const std::string error = cvt::BuildAtlas(cvttest::Sphere(3), options, atlas);
+  EXPECT_NE(error.find("pixel budget"), std::string::npos) << error;
+  EXPECT_NE(cvt::BuildAtlas(cvt::SurfaceMesh(), options, atlas), "");
+}
