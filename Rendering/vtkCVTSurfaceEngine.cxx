@@ -35,8 +35,9 @@ struct vtkCVTSurfaceEngine::Internals
 {
   vtkNew<vtkTextureObject> Positions; // (x, y, z, valid)
   vtkNew<vtkTextureObject> Weights;
-  vtkCVTSiteSlots Sites{ 1 };   // (x, y, z, pixel index)
-  vtkCVTSiteSlots Targets{ 1 }; // constrained centroids: where each site should go
+  vtkNew<vtkTextureObject> Seams; // (i, j) of each pixel's seam partner; 1 x 1 without seams
+  vtkCVTSiteSlots Sites{ 1 };     // (x, y, z, pixel index)
+  vtkCVTSiteSlots Targets{ 1 };   // constrained centroids: where each site should go
   // Per slot: the cell sums, the energy, and the largest pixel distance from the site's pixel.
   vtkCVTSlotReduction Reduction{ { { 4, vtkCVTSlotReduction::Blend::Sum },
     { 1, vtkCVTSlotReduction::Blend::Sum }, { 1, vtkCVTSlotReduction::Blend::Maximum } } };
@@ -53,7 +54,7 @@ struct vtkCVTSurfaceEngine::Internals
   void Release(vtkOpenGLRenderWindow* window)
   {
     for (vtkTextureObject* t :
-      { this->Positions.Get(), this->Weights.Get(), this->NearestPoints.Get(),
+      { this->Positions.Get(), this->Weights.Get(), this->Seams.Get(), this->NearestPoints.Get(),
         this->NearestCorners.Get(), this->Nearest.Get(), this->NearestDepth.Get() })
     {
       t->ReleaseGraphicsResources(window);
@@ -147,8 +148,21 @@ bool vtkCVTSurfaceEngine::SetGeometryImage(const cvt::GeometryImage& image)
     }
     positions[4 * p + 3] = image.IsValid(static_cast<long long>(p)) ? 1.0f : 0.0f;
   }
+  // Seam partners as pixel coordinates (exact in floats for any texture size).
+  this->HasSeams = !image.SeamPartner.empty();
+  std::vector<float> seams(this->HasSeams ? 2 * pixels : 2, -1.0f);
+  for (size_t p = 0; p < image.SeamPartner.size(); ++p)
+  {
+    if (image.SeamPartner[p] >= 0)
+    {
+      seams[2 * p] = static_cast<float>(image.SeamPartner[p] % image.Width);
+      seams[2 * p + 1] = static_cast<float>(image.SeamPartner[p] / image.Width);
+    }
+  }
   bool ok =
     AllocateFloatTexture(in.Positions, window, image.Width, image.Height, 4, positions.data()) &&
+    AllocateFloatTexture(in.Seams, window, this->HasSeams ? image.Width : 1,
+      this->HasSeams ? image.Height : 1, 2, seams.data()) &&
     AllocateFloatTexture(in.Weights, window, image.Width, image.Height, 1, image.AreaWeight.data());
   ok = ok && this->Flooding->Allocate(window, image.Width, image.Height);
   ok = ok && AllocateFloatTexture(in.NearestPoints, window, image.Width, image.Height, 4) &&
@@ -266,18 +280,28 @@ bool vtkCVTSurfaceEngine::Label(int initialStep)
   state->vtkglViewport(0, 0, this->GridSize[0], this->GridSize[1]);
   state->PushFramebufferBindings();
 
-  // Seed, then 1+JFA from the seeds.
+  // Seed, then 1+JFA from the seeds. Across an atlas's seams a site reaches the other chart
+  // only through the border pixels, possibly in the last passes: a second sweep carries it on,
+  // and pixel distances between charts mean nothing, so both sweeps start from the full step.
   in.Positions->Activate();
+  in.Seams->Activate();
   const auto surfaceUniforms = [this](vtkShaderProgram* program)
   {
     program->SetUniformi("positions", this->Internal->Positions->GetTextureUnit());
     program->SetUniform2i("wrap", this->Wrap);
+    program->SetUniformi("seams", this->Internal->Seams->GetTextureUnit());
+    program->SetUniformi("hasSeams", this->HasSeams ? 1 : 0);
   };
+  const int step = this->HasSeams ? this->Flooding->GetFullStep() : initialStep;
   const int seeded = this->Flooding->Seed(window, in.Sites.GetCurrent(), in.Sites.GetSlotSize(),
     in.Sites.GetNumberOfSites(), this->GridSize, surfaceUniforms);
-  const int labelled = seeded < 0
-    ? -1
-    : this->Flooding->Flood(window, seeded, initialStep, this->GridSize, surfaceUniforms);
+  int labelled =
+    seeded < 0 ? -1 : this->Flooding->Flood(window, seeded, step, this->GridSize, surfaceUniforms);
+  if (this->HasSeams && labelled >= 0)
+  {
+    labelled = this->Flooding->Flood(window, labelled, step, this->GridSize, surfaceUniforms);
+  }
+  in.Seams->Deactivate();
   in.Positions->Deactivate();
   state->PopFramebufferBindings();
   if (labelled < 0)
@@ -335,6 +359,10 @@ bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
     sums.MomentZ[i] = texels[4 * i + 3];
     sums.Energy[i] = energy[i];
     maximumRadius = std::max(maximumRadius, static_cast<double>(radius[i]));
+  }
+  if (this->HasSeams)
+  {
+    maximumRadius = 0.0; // pixel distances across charts mean nothing; seams take the full step
   }
   if (!this->SumAcrossParts(sums) || !this->MaximumAcrossParts(maximumRadius))
   {
@@ -567,5 +595,6 @@ void vtkCVTSurfaceEngine::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "GeometryImage: " << this->GridSize[0] << " x " << this->GridSize[1] << " (wrap "
      << this->Wrap[0] << ", " << this->Wrap[1] << ")\n";
+  os << indent << "Seams: " << (this->HasSeams ? "yes" : "no") << "\n";
   os << indent << "NumberOfSites: " << this->Internal->Sites.GetNumberOfSites() << "\n";
 }

@@ -71,6 +71,7 @@ private:
   int GridSize[2] = { 0, 0 };
   double Diagonal = 1.0; // of the surface's bounding box: the depth scale of nearest points
   int Wrap[2] = { 0, 0 };
+  bool HasSeams = false; // an atlas: chart-border pixels have seam partners
 };
 
 #endif

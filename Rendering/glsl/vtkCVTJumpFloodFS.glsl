@@ -1,9 +1,10 @@
 //VTK::System::Dec
 //CVT::Slots::Dec
 //VTK::Output::Dec
-// One jump flooding pass: every pixel that takes part looks at itself and its 8 neighbours
-// stepLength pixels away and keeps the nearest site seen. The texel layout, the distance and
-// the identified borders come from the distance snippet (plane or geometry image).
+// One jump flooding pass: every pixel that takes part looks at itself, its 8 neighbours
+// stepLength pixels away and its seam partner (on an atlas) and keeps the nearest site seen.
+// The texel layout, the distance, the identified borders and the seams come from the distance
+// snippet (plane or geometry image).
 uniform sampler2D seeds;
 uniform int stepLength;
 uniform ivec2 gridSize;
@@ -19,9 +20,9 @@ void main()
   if (here.w > 0.0)
   {
     float bestDistance = 3.0e38;
-    for (int n = 0; n < 9; ++n)
+    for (int n = 0; n < 10; ++n)
     {
-      ivec2 q = cvtWrap(p + ivec2(n % 3 - 1, n / 3 - 1) * stepLength);
+      ivec2 q = n < 9 ? cvtWrap(p + ivec2(n % 3 - 1, n / 3 - 1) * stepLength) : cvtSeamPartner(p);
       if (!cvtInGrid(q, gridSize))
         continue;
       vec4 candidate = texelFetch(seeds, q, 0);

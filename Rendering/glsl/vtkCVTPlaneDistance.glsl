@@ -20,6 +20,11 @@ ivec2 cvtWrap(ivec2 q)
   return q;
 }
 
+ivec2 cvtSeamPartner(ivec2 p)
+{
+  return ivec2(-1); // the plane has no seams
+}
+
 float cvtDistance2(vec4 site, vec4 here)
 {
   vec2 d = (site.xy - here.xy) * metric;

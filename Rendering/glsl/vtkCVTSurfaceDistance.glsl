@@ -1,9 +1,12 @@
 // Jump flooding on a geometry image (spliced in at //CVT::Distance::Dec): texels hold (site x,
 // y, z, id), distances are 3D Euclidean distances from the pixel's surface point, borders
-// identified by the wrap flags are neighbours, and masked pixels (w = 0) take no part. Site
-// slots hold (x, y, z, index of the pixel that holds the site).
+// identified by the wrap flags are neighbours, masked pixels (w = 0) take no part, and an
+// atlas's chart-border pixels also look at their seam partner, the pixel where the surface goes
+// on in another chart. Site slots hold (x, y, z, index of the pixel that holds the site).
 uniform sampler2D positions; // (x, y, z, valid)
 uniform ivec2 wrap;          // (wrap u, wrap v)
+uniform sampler2D seams;     // per pixel: (i, j) of its seam partner, (-1, -1) for none
+uniform int hasSeams;
 const vec4 cvtNoSite = vec4(0.0, 0.0, 0.0, -1.0);
 
 float cvtSiteId(vec4 texel)
@@ -23,6 +26,12 @@ ivec2 cvtWrap(ivec2 q)
   if (wrap.y != 0)
     q.y = (q.y % gridSize.y + gridSize.y) % gridSize.y;
   return q;
+}
+
+// The pixel where the surface goes on across a chart border, or (-1, -1).
+ivec2 cvtSeamPartner(ivec2 p)
+{
+  return hasSeams != 0 ? ivec2(texelFetch(seams, p, 0).xy) : ivec2(-1);
 }
 
 float cvtDistance2(vec4 site, vec4 here)

@@ -1,7 +1,9 @@
 // The GPU surface engine on a torus geometry image against independent CPU computations:
 // brute-force nearest-site labels, sums over the GPU's labels, constrained centroids.
+#include "cvtAtlas.h"
 #include "cvtRenderingTestSupport.h"
 #include "cvtSurface.h"
+#include "cvtTestMeshes.h"
 #include "vtkCVTSurfaceEngine.h"
 
 #include "vtkNew.h"
@@ -11,15 +13,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 using cvttest::TorusGeometryImage;
 
 namespace
 {
-/// Pixels whose label is not (within float error) a nearest site in 3D, by brute force.
-int CountSurfaceMislabels(
-  const cvt::GeometryImage& gi, const std::vector<double>& sites, const std::vector<int>& labels)
+/// Pixels whose label is not (within float error) a nearest site in 3D, by brute force, or
+/// that are masked but labelled; with `seamsOnly`, only pixels with a seam partner count.
+int CountSurfaceMislabels(const cvt::GeometryImage& gi, const std::vector<double>& sites,
+  const std::vector<int>& labels, bool seamsOnly = false)
 {
   const int n = static_cast<int>(sites.size() / 3);
   const auto distance2 = [&](long long p, int s)
@@ -34,6 +38,15 @@ int CountSurfaceMislabels(
   int wrong = 0;
   for (long long p = 0; p < gi.NumberOfPixels(); ++p)
   {
+    if (seamsOnly && (gi.SeamPartner.empty() || gi.SeamPartner[p] < 0))
+    {
+      continue;
+    }
+    if (!gi.IsValid(p))
+    {
+      wrong += labels[p] != -1 ? 1 : 0;
+      continue;
+    }
     double best = std::numeric_limits<double>::infinity();
     for (int s = 0; s < n; ++s)
     {
@@ -276,4 +289,56 @@ TEST(SurfaceEngine, SitesSharingAPixelKeepTheirCells)
     EXPECT_GT(sums.Mass[s], 0.0) << "site " << s << " lost its cell of " << owned[s] << " pixels";
   }
   EXPECT_LE(CountSurfaceMislabels(gi, sites, labels), gi.NumberOfPixels() / 200);
+}
+
+TEST(SurfaceEngine, AtlasCellsCrossSeams)
+{
+  // Surfaces cut into charts: with the seams, every pixel's label is the nearest site in 3D,
+  // chart-border pixels included; without them, cells stop at the chart borders.
+  const std::pair<const char*, cvt::SurfaceMesh> meshes[] = { { "sphere", cvttest::Sphere(4) },
+    { "sphere and torus",
+      cvttest::TwoParts(cvttest::Sphere(3), cvttest::Torus(1.0, 0.3, 48, 16), 3.0) } };
+  for (const auto& named : meshes)
+  {
+    SCOPED_TRACE(named.first);
+    cvt::AtlasOptions options;
+    options.PixelBudget = 120000;
+    cvt::Atlas atlas;
+    ASSERT_EQ(cvt::BuildAtlas(named.second, options, atlas), "");
+    const cvt::GeometryImage& gi = atlas.Image;
+    long long valid = 0, seamPixels = 0;
+    double area = 0.0;
+    for (long long p = 0; p < gi.NumberOfPixels(); ++p)
+    {
+      valid += gi.IsValid(p) ? 1 : 0;
+      seamPixels += gi.SeamPartner[p] >= 0 ? 1 : 0;
+      area += gi.AreaWeight[p];
+    }
+    std::vector<long long> pixels;
+    const std::vector<double> sites = cvt::SampleSurfaceSites(gi, 150, 5, pixels);
+    cvt::CellSums sums;
+    std::vector<int> labels;
+    ASSERT_TRUE(LabelOnce(gi, sites, pixels, sums, labels));
+    const int wrong = CountSurfaceMislabels(gi, sites, labels);
+    const int wrongOnSeams = CountSurfaceMislabels(gi, sites, labels, true);
+    double mass = 0.0;
+    for (double m : sums.Mass)
+    {
+      mass += m;
+    }
+    EXPECT_NEAR(mass, area, 1e-4 * area);
+
+    cvt::GeometryImage cut = gi;
+    cut.SeamPartner.clear();
+    std::vector<int> cutLabels;
+    ASSERT_TRUE(LabelOnce(cut, sites, pixels, sums, cutLabels));
+    const int wrongWithoutSeams = CountSurfaceMislabels(gi, sites, cutLabels);
+    std::cout << "[ measured ] atlas of the " << named.first << ", " << atlas.NumberOfCharts
+              << " charts: " << wrong << " of " << valid << " pixels mislabelled (" << wrongOnSeams
+              << " of " << seamPixels << " seam pixels); without the seams " << wrongWithoutSeams
+              << "\n";
+    EXPECT_LE(wrong, valid / 200);             // under 0.5%
+    EXPECT_LE(wrongOnSeams, seamPixels / 100); // under 1%
+    EXPECT_GT(wrongWithoutSeams, 4 * wrong + valid / 100);
+  }
 }
