@@ -170,6 +170,7 @@ Options ParseArguments(const std::vector<std::string>& args)
       {
         Fail("--gi-resolution needs 2 values: W H", 2);
       }
+      options.GIResolutionGiven = true;
       for (int& r : options.GIResolution)
       {
         r = ParseInt(a, args[++k].c_str());

@@ -26,6 +26,7 @@ struct Options
   int Resolution = 512, Sites = 1000, Iterations = 100;
   double Torus[2] = { 1.0, 0.4 };
   int GIResolution[2] = { 1024, 512 };
+  bool GIResolutionGiven = false; // else a mesh's atlas is sized from --sites
   bool HaveTorus = false, HaveImageOption = false;
   std::string Engine = "auto";
   long long Seed = 1;

@@ -50,8 +50,36 @@ vtkSmartPointer<vtkAlgorithm> SurfaceGeometryImage(const Options& options)
   merge->SetInputConnection(reader->GetOutputPort());
   auto parameterise = vtkSmartPointer<vtkCVTMeshGeometryImage>::New();
   parameterise->SetInputConnection(merge->GetOutputPort());
-  parameterise->SetResolution(options.GIResolution[0], options.GIResolution[1]);
+  if (options.GIResolutionGiven)
+  {
+    parameterise->SetResolution(options.GIResolution[0], options.GIResolution[1]);
+  }
+  else
+  {
+    // An atlas fills about half its image: 800 pixels per site keep cells some 20 pixels wide.
+    const int side =
+      static_cast<int>(std::ceil(std::sqrt(std::max(512.0 * 512.0, 800.0 * options.Sites))));
+    parameterise->SetResolution(side, side);
+  }
   return parameterise;
+}
+
+/// The atlas lines of --report (chart count, distortion range, seam length), if an atlas.
+std::string AtlasReport(vtkDataObject* image)
+{
+  vtkFieldData* fields = image ? image->GetFieldData() : nullptr;
+  if (!fields || !fields->GetArray("NumberOfCharts"))
+  {
+    return "";
+  }
+  const auto value = [fields](const char* name) { return fields->GetArray(name)->GetTuple1(0); };
+  std::ostringstream text;
+  text << std::setprecision(6) << "  atlas: " << value("NumberOfCharts") << " charts, seam length "
+       << value("SeamLength") << " (" << value("SeamPixels") << " seam pixels)\n"
+       << "  atlas area stretch min / max " << value("MinimumAreaStretch") << " / "
+       << value("MaximumAreaStretch") << ", angle stretch max " << value("MaximumAngleStretch")
+       << "\n";
+  return text.str();
 }
 
 /// cvt surface --input MESH on the CPU engine: restricted Voronoi cells on the mesh itself.
@@ -192,6 +220,7 @@ int RunSurface(const Options& options)
               << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
               << "  area weights min / max      " << Field(sites, "MinimumAreaWeight") << " / "
               << Field(sites, "MaximumAreaWeight") << "\n"
+              << AtlasReport(geometryImage->GetOutputDataObject(0))
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")

@@ -1,5 +1,7 @@
 #include "vtkCVTMeshGeometryImage.h"
 
+#include "cvtAtlas.h"
+
 #include "cvtParameterization.h"
 #include "vtkCVTOutputHelpers.h"
 
@@ -8,9 +10,11 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangle.h"
@@ -95,12 +99,18 @@ int vtkCVTMeshGeometryImage::RequestData(
     mesh.Triangles.push_back(
       { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
   }
-  bool closed = false;
-  const std::string problem = cvt::CheckMesh(mesh, closed);
-  if (!problem.empty())
+  bool closed = false, manifold = false;
+  const std::string problem = cvt::CheckMesh(mesh, closed, &manifold);
+  if (!manifold)
   {
     vtkErrorMacro("Bad mesh: " << problem << ".");
     return 0;
+  }
+  // One chart where one suffices (a disk, a star-shaped genus-0 surface); an atlas for the rest
+  // (several parts, genus, boundary loops, shapes not star-shaped) or when asked for.
+  if (this->Parameterization == ATLAS || !problem.empty())
+  {
+    return this->BuildAtlas(mesh, output) ? 1 : 0;
   }
   if (closed)
   {
@@ -108,8 +118,7 @@ int vtkCVTMeshGeometryImage::RequestData(
     std::string error;
     if (!this->SampleClosedMesh(input, image, error))
     {
-      vtkErrorMacro("The closed mesh could not be parameterised: " << error << ".");
-      return 0;
+      return this->BuildAtlas(mesh, output) ? 1 : 0;
     }
     cvtvtk::WriteGeometryImage(image, output);
     return 1;
@@ -124,6 +133,49 @@ int vtkCVTMeshGeometryImage::RequestData(
   cvtvtk::WriteGeometryImage(
     cvt::ResampleMesh(mesh, uv, this->Resolution[0], this->Resolution[1]), output);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTMeshGeometryImage::BuildAtlas(const cvt::TriangleMesh& triangles, vtkImageData* output)
+{
+  cvt::SurfaceMesh mesh;
+  mesh.Points = triangles.Points;
+  mesh.Triangles = triangles.Triangles;
+  cvt::MeshRepairReport report;
+  std::string error = cvt::RepairSurfaceMesh(mesh, report);
+  if (!error.empty())
+  {
+    vtkErrorMacro("Cannot cut this mesh into charts: " << error << ".");
+    return false;
+  }
+  if (report.Changed())
+  {
+    vtkWarningMacro("The mesh was repaired for its atlas: " << report.Summary() << ".");
+  }
+  cvt::AtlasOptions options;
+  options.Width = this->Resolution[0];
+  options.Height = this->Resolution[1];
+  cvt::Atlas atlas;
+  error = cvt::BuildAtlas(mesh, options, atlas);
+  if (!error.empty())
+  {
+    vtkErrorMacro("The atlas failed: " << error << ".");
+    return false;
+  }
+  cvtvtk::WriteGeometryImage(atlas.Image, output);
+  vtkNew<vtkIntArray> charts;
+  charts->SetName("ChartId");
+  charts->SetNumberOfTuples(static_cast<vtkIdType>(atlas.Chart.size()));
+  std::copy(atlas.Chart.begin(), atlas.Chart.end(), charts->GetPointer(0));
+  output->GetPointData()->AddArray(charts);
+  vtkFieldData* fields = output->GetFieldData();
+  cvtvtk::AddFieldValue(fields, "NumberOfCharts", atlas.NumberOfCharts);
+  cvtvtk::AddFieldValue(fields, "SeamLength", atlas.SeamLength);
+  cvtvtk::AddFieldValue(fields, "SeamPixels", static_cast<double>(atlas.SeamPixels));
+  cvtvtk::AddFieldValue(fields, "MinimumAreaStretch", atlas.MinimumAreaStretch);
+  cvtvtk::AddFieldValue(fields, "MaximumAreaStretch", atlas.MaximumAreaStretch);
+  cvtvtk::AddFieldValue(fields, "MaximumAngleStretch", atlas.MaximumAngleStretch);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -226,4 +278,6 @@ void vtkCVTMeshGeometryImage::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Resolution: " << this->Resolution[0] << " x " << this->Resolution[1] << "\n";
+  os << indent << "Parameterization: " << (this->Parameterization == ATLAS ? "atlas" : "automatic")
+     << "\n";
 }

@@ -11,9 +11,19 @@
  * arrays as vtkCVTGeometryImageSource (Position, Normal, AreaWeight, Mask, wrap flags); its
  * field data report the smallest and largest area weight: the parameterisation's distortion.
  *
- * The mesh must be one manifold surface: triangles only, finite coordinates, no zero-area
- * triangle, every edge on at most two triangles, one component, and a disk or a closed genus-0
- * surface. Anything else is an error saying what the parameterisation needs.
+ * Any other orientable manifold mesh (several parts, any genus and number of boundary loops,
+ * a closed shape that is not star-shaped), or any mesh when Parameterization is ATLAS, becomes
+ * an atlas (cvt::BuildAtlas): disk-shaped charts of bounded normal variation, each mapped by
+ * least squares conformal maps, scaled as large as fits and packed into the Resolution[0] x
+ * Resolution[1] image, with an int point array ChartId (-1
+ * between charts) and SeamPartner (the pixel where the surface goes on across a chart border,
+ * -1 for none); field data NumberOfCharts, SeamLength, SeamPixels and the distortion range
+ * (Minimum/MaximumAreaStretch, MaximumAngleStretch). Pinched points are split and triangles
+ * oriented first (a warning says so).
+ *
+ * The mesh must be made of triangles with finite coordinates, no zero-area triangle and every
+ * edge on at most two triangles; a non-orientable surface is refused. Each is an error saying
+ * what to fix.
  */
 #ifndef vtkCVTMeshGeometryImage_h
 #define vtkCVTMeshGeometryImage_h
@@ -26,6 +36,7 @@
 namespace cvt
 {
 struct GeometryImage;
+struct TriangleMesh;
 }
 class vtkPolyData;
 
@@ -42,6 +53,19 @@ public:
   vtkGetVector2Macro(Resolution, int);
   ///@}
 
+  enum ParameterizationType
+  {
+    AUTOMATIC = 0, ///< one chart for disks and star-shaped genus-0 meshes, else an atlas
+    ATLAS = 1      ///< always an atlas
+  };
+  ///@{
+  /** How the mesh is mapped to the image (default AUTOMATIC). */
+  vtkSetClampMacro(Parameterization, int, AUTOMATIC, ATLAS);
+  vtkGetMacro(Parameterization, int);
+  void SetParameterizationToAutomatic() { this->SetParameterization(AUTOMATIC); }
+  void SetParameterizationToAtlas() { this->SetParameterization(ATLAS); }
+  ///@}
+
 protected:
   vtkCVTMeshGeometryImage();
   ~vtkCVTMeshGeometryImage() override = default;
@@ -51,8 +75,10 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Resolution[2] = { 512, 512 };
+  int Parameterization = AUTOMATIC;
 
 private:
+  bool BuildAtlas(const cvt::TriangleMesh& mesh, vtkImageData* output);
   bool SampleClosedMesh(vtkPolyData* mesh, cvt::GeometryImage& image, std::string& error);
   vtkCVTMeshGeometryImage(const vtkCVTMeshGeometryImage&) = delete;
   void operator=(const vtkCVTMeshGeometryImage&) = delete;

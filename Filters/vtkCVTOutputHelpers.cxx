@@ -332,6 +332,14 @@ void WriteGeometryImage(const cvt::GeometryImage& image, vtkImageData* output)
   output->GetPointData()->AddArray(normal);
   output->GetPointData()->AddArray(weight);
   output->GetPointData()->AddArray(mask);
+  if (!image.SeamPartner.empty())
+  {
+    vtkNew<vtkIntArray> seams;
+    seams->SetName("SeamPartner");
+    seams->SetNumberOfTuples(pixels);
+    std::copy(image.SeamPartner.begin(), image.SeamPartner.end(), seams->GetPointer(0));
+    output->GetPointData()->AddArray(seams);
+  }
   vtkFieldData* fields = output->GetFieldData();
   AddFieldValue(fields, "WrapU", image.WrapU ? 1.0 : 0.0);
   AddFieldValue(fields, "WrapV", image.WrapV ? 1.0 : 0.0);

@@ -147,6 +147,14 @@ bool vtkCVTSurfaceFilter::ReadGeometryImage(
       image.Mask[p] = mask->GetComponent(p, 0) != 0.0 ? 1 : 0;
     }
   }
+  if (vtkDataArray* seams = pd->GetArray("SeamPartner"))
+  {
+    image.SeamPartner.resize(static_cast<size_t>(seams->GetNumberOfTuples()));
+    for (vtkIdType p = 0; p < seams->GetNumberOfTuples(); ++p)
+    {
+      image.SeamPartner[p] = static_cast<int>(seams->GetComponent(p, 0));
+    }
+  }
   if (!ReadFloats(pd->GetArray("AreaWeight"), 1, image.AreaWeight))
   {
     image.AreaWeight = cvt::ComputeAreaWeights(image);
@@ -183,6 +191,16 @@ bool vtkCVTSurfaceFilter::Compute(
   }
 
   const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
+  if (!choice.UseOpenGL && !image.SeamPartner.empty())
+  {
+    vtkErrorMacro("This geometry image is an atlas (charts joined by seams), which only the "
+                  "OpenGL engine follows, and the "
+      << (this->Engine == CPU ? "CPU engine was asked for" : "automatic choice is the CPU ")
+      << (this->Engine == CPU ? "" : ("(" + choice.Reason + ")"))
+      << "; set Engine to OpenGL, or remesh the mesh itself with CVT Remesh "
+         "(vtkCVTRemeshFilter), exact on the CPU.");
+    return false;
+  }
   const bool computed = choice.UseOpenGL
     ? this->RunOnGPU(input, image, choice.Reason, outputVector)
     : this->RunOnCPU(input, image, weights.ValidPixels, choice.Reason, outputVector);

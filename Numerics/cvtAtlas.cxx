@@ -386,9 +386,10 @@ void NormalizeChart(const Faces& faces, Chart& chart)
   }
 }
 
-/// Shelf packing of the charts' boxes at `scale` pixels per unit: tallest first, rows of at
-/// most about the square root of the boxes' total area. Returns the image size.
-std::array<long long, 2> Pack(std::vector<Chart>& charts, double scale, int margin)
+/// Shelf packing of the charts' boxes at `scale` pixels per unit: tallest first, in rows of at
+/// most `rowWidth` pixels. Returns the size they take.
+std::array<long long, 2> Pack(
+  std::vector<Chart>& charts, double scale, int margin, long long rowWidth)
 {
   std::vector<std::array<long long, 2>> sizes(charts.size());
   long long area = 0, widest = 0;
@@ -400,8 +401,10 @@ std::array<long long, 2> Pack(std::vector<Chart>& charts, double scale, int marg
     area += sizes[c][0] * sizes[c][1];
     widest = std::max(widest, sizes[c][0]);
   }
-  const long long rowWidth =
-    std::max(widest, static_cast<long long>(std::ceil(std::sqrt(1.05 * area))));
+  if (widest > rowWidth)
+  {
+    return { widest, 1LL << 40 }; // does not fit: a smaller scale is needed
+  }
   std::vector<size_t> order(charts.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(
@@ -777,31 +780,34 @@ std::string BuildAtlas(const SurfaceMesh& mesh, const AtlasOptions& options, Atl
         regrow.push_back(static_cast<int>(c));
       }
     }
-    double scale = std::sqrt(0.6 * static_cast<double>(options.PixelBudget) / totalArea);
-    std::array<long long, 2> size{ 0, 0 };
-    for (int attempt = 0; regrow.empty() && attempt < 40; ++attempt)
+    // The largest scale whose packing fits (bisection on the scale, from the area's bound).
+    const double pixels = static_cast<double>(options.Width) * options.Height;
+    double high = std::sqrt(pixels / totalArea), low = 0.0, scale = 0.0;
+    for (int attempt = 0; regrow.empty() && attempt < 30; ++attempt)
     {
-      size = Pack(charts, scale, margin);
-      if (size[0] * size[1] <= options.PixelBudget)
+      const double trial = 0.5 * (low + high);
+      if (Pack(charts, trial, margin, options.Width)[1] <= options.Height)
       {
-        break;
+        low = scale = trial;
       }
-      scale *= 0.97 *
-        std::sqrt(
-          static_cast<double>(options.PixelBudget) / static_cast<double>(size[0] * size[1]));
+      else
+      {
+        high = trial;
+      }
     }
     if (regrow.empty())
     {
-      if (size[0] * size[1] > options.PixelBudget || size[0] < 2 || size[1] < 2)
+      if (scale <= 0.0 || options.Width < 2 || options.Height < 2)
       {
         std::ostringstream message;
-        message << "a pixel budget of " << options.PixelBudget << " cannot hold the "
-                << charts.size() << " charts of this mesh; give a larger one";
+        message << "a " << options.Width << " x " << options.Height << " image cannot hold the "
+                << charts.size() << " charts of this mesh; give a larger resolution";
         return message.str();
       }
+      Pack(charts, scale, margin, options.Width);
       atlas.Image = GeometryImage();
-      atlas.Image.Width = static_cast<int>(size[0]);
-      atlas.Image.Height = static_cast<int>(size[1]);
+      atlas.Image.Width = options.Width;
+      atlas.Image.Height = options.Height;
       const std::vector<int> folded = Rasterize(mesh, faces, charts, scale, margin, atlas);
       if (folded.empty() || round >= 6)
       {

@@ -2,9 +2,9 @@
 // loops and parts): the surface is cut into disk-like charts of bounded normal variation,
 // each chart is mapped to the plane by least squares conformal maps (Levy et al. 2002; a
 // sparse solve with Eigen) without flipped or overlapping triangles, and the charts are packed
-// into one image with a mask. Every pixel near a chart border whose surface goes on in another
-// chart records the pixel where it goes on (its seam partner), so that the Voronoi labelling
-// and everything built on it can cross the cut.
+// into one image of a given size, with a mask. Every pixel near a chart border whose surface goes
+// on in another chart records the pixel where it goes on (its seam partner), so that the Voronoi
+// labelling and everything built on it can cross the cut.
 #ifndef cvtAtlas_h
 #define cvtAtlas_h
 
@@ -20,9 +20,10 @@ namespace cvt
 
 struct AtlasOptions
 {
-  long long PixelBudget = 512 * 512; // the image holds at most this many pixels
-  double MaximumNormalAngle = 60.0;  // degrees between a chart's seed and any of its triangles
-  int Gutter = 2;                    // empty pixels between charts
+  int Width = 512; // the image's size: the charts are scaled to fill it
+  int Height = 512;
+  double MaximumNormalAngle = 60.0; // degrees between a chart's seed and any of its triangles
+  int Gutter = 2;                   // empty pixels between charts
 };
 
 struct Atlas
@@ -43,8 +44,7 @@ struct Atlas
 };
 
 /// Builds the atlas of a mesh that RepairSurfaceMesh has cleaned (edge-manifold, oriented).
-/// Returns "" or what went wrong (no triangle, a budget too small to give every chart a
-/// pixel).
+/// Returns "" or what went wrong (no triangle, an image too small for the charts).
 CVTNUMERICS_EXPORT std::string BuildAtlas(
   const SurfaceMesh& mesh, const AtlasOptions& options, Atlas& atlas);
 

@@ -81,9 +81,13 @@ std::vector<int> BoundaryLoop(const TriangleMesh& mesh)
 }
 }
 
-std::string CheckMesh(const TriangleMesh& mesh, bool& closed)
+std::string CheckMesh(const TriangleMesh& mesh, bool& closed, bool* manifold)
 {
   closed = false;
+  if (manifold)
+  {
+    *manifold = false;
+  }
   const int n = static_cast<int>(mesh.Points.size() / 3);
   if (mesh.Triangles.empty())
   {
@@ -136,6 +140,10 @@ std::string CheckMesh(const TriangleMesh& mesh, bool& closed)
       }
       component[find(t[e])] = find(t[(e + 1) % 3]);
     }
+  }
+  if (manifold)
+  {
+    *manifold = true; // what follows is about topology only
   }
   int components = 0, vertices = 0;
   for (int v = 0; v < n; ++v)

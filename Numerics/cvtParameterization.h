@@ -24,8 +24,10 @@ struct TriangleMesh
 /// no zero-area triangle, every edge on at most two triangles, one connected component, and
 /// either a disk (one boundary loop, Euler characteristic 1) or a closed genus-0 surface (no
 /// boundary, Euler characteristic 2; `closed` is then set). Empty string when fine, else what
-/// is wrong and what the parameterisation needs.
-CVTNUMERICS_EXPORT std::string CheckMesh(const TriangleMesh& mesh, bool& closed);
+/// is wrong and what the parameterisation needs. `manifold`, when given, tells whether the
+/// mesh passed every check but those of topology (components, genus, boundary loops).
+CVTNUMERICS_EXPORT std::string CheckMesh(
+  const TriangleMesh& mesh, bool& closed, bool* manifold = nullptr);
 
 /// (u, v) in [0, 1]^2 per vertex: mean-value coordinates, boundary on the square. The mesh
 /// must pass CheckMesh as a disk. Returns false with a message when the solve fails.

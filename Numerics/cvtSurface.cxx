@@ -286,50 +286,81 @@ std::vector<std::array<int, 3>> DualTriangles(
   const auto site = [&sites](int s) {
     return Vec3{ sites[3 * s], sites[3 * s + 1], sites[3 * s + 2] };
   };
+  // One triangle per three labels round a corner (two, split along the shorter diagonal, for
+  // four); `normal`, when given, is the surface's side: the triangle is turned to face it.
+  const auto corner = [&](const long long quad[4], const Vec3* normal)
+  {
+    // Labels around the corner, counter-clockwise, consecutive repeats merged.
+    std::vector<int> ring;
+    for (int k = 0; k < 4; ++k)
+    {
+      const int label = labels[quad[k]];
+      if (label < 0)
+      {
+        return;
+      }
+      if (ring.empty() || ring.back() != label)
+      {
+        ring.push_back(label);
+      }
+    }
+    if (ring.size() > 1 && ring.front() == ring.back())
+    {
+      ring.pop_back();
+    }
+    const auto facing = [&](int a, int b, int c)
+    {
+      if (normal && Dot(Cross(Sub(site(b), site(a)), Sub(site(c), site(a))), *normal) < 0.0)
+      {
+        std::swap(b, c);
+      }
+      add(a, b, c);
+    };
+    if (ring.size() == 3)
+    {
+      facing(ring[0], ring[1], ring[2]);
+    }
+    else if (ring.size() == 4 && ring[0] != ring[2] && ring[1] != ring[3])
+    {
+      if (Distance2(site(ring[0]), site(ring[2])) <= Distance2(site(ring[1]), site(ring[3])))
+      {
+        facing(ring[0], ring[1], ring[2]);
+        facing(ring[0], ring[2], ring[3]);
+      }
+      else
+      {
+        facing(ring[0], ring[1], ring[3]);
+        facing(ring[1], ring[2], ring[3]);
+      }
+    }
+  };
   long long quad[4];
   for (int j = 0; j < image.Height; ++j)
   {
     for (int i = 0; i < image.Width; ++i)
     {
-      if (!Quad(image, i, j, quad))
+      if (Quad(image, i, j, quad))
       {
-        continue;
+        corner(quad, nullptr);
       }
-      // Labels around the corner, counter-clockwise, consecutive repeats merged.
-      std::vector<int> ring;
-      for (int k = 0; k < 4; ++k)
+    }
+  }
+  // Across an atlas's seams: two neighbouring border pixels and their partners in the other
+  // chart make a corner too.
+  for (long long p = 0; p < static_cast<long long>(image.SeamPartner.size()); ++p)
+  {
+    const int i = static_cast<int>(p % image.Width), j = static_cast<int>(p / image.Width);
+    if (image.SeamPartner[p] < 0)
+    {
+      continue;
+    }
+    const Vec3 normal = At(image.Normal, p);
+    for (const long long next : { image.Neighbor(i, j, 1, 0), image.Neighbor(i, j, 0, 1) })
+    {
+      if (next >= 0 && image.IsValid(next) && image.SeamPartner[next] >= 0)
       {
-        const int label = labels[quad[k]];
-        if (label < 0)
-        {
-          ring.clear();
-          break;
-        }
-        if (ring.empty() || ring.back() != label)
-        {
-          ring.push_back(label);
-        }
-      }
-      if (ring.size() > 1 && ring.front() == ring.back())
-      {
-        ring.pop_back();
-      }
-      if (ring.size() == 3)
-      {
-        add(ring[0], ring[1], ring[2]);
-      }
-      else if (ring.size() == 4 && ring[0] != ring[2] && ring[1] != ring[3])
-      {
-        if (Distance2(site(ring[0]), site(ring[2])) <= Distance2(site(ring[1]), site(ring[3])))
-        {
-          add(ring[0], ring[1], ring[2]);
-          add(ring[0], ring[2], ring[3]);
-        }
-        else
-        {
-          add(ring[0], ring[1], ring[3]);
-          add(ring[1], ring[2], ring[3]);
-        }
+        const long long across[4] = { p, next, image.SeamPartner[next], image.SeamPartner[p] };
+        corner(across, &normal);
       }
     }
   }

@@ -56,7 +56,8 @@ CVTNUMERICS_EXPORT void NearestPointsInCells(const GeometryImage& image,
 
 /// The dual triangulation of a labelling: one triangle per pixel corner where three cells
 /// meet (two where four meet, split along the shorter diagonal), oriented like the image,
-/// without duplicates.
+/// without duplicates. On an atlas, two neighbouring border pixels and their seam partners
+/// also make a corner, whose triangles face the pixels' normal.
 CVTNUMERICS_EXPORT std::vector<std::array<int, 3>> DualTriangles(
   const GeometryImage& image, const std::vector<int>& labels, const std::vector<double>& sites);
 

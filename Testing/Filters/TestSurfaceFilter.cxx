@@ -426,7 +426,7 @@ TEST(MeshGeometryImage, DiskMeshIsParameterisedResampledAndRemeshed)
   EXPECT_EQ(remesh.Euler(), 1); // a disk
 }
 
-TEST(MeshGeometryImageBadInput, EveryBadMeshSaysWhatTheParameterisationNeeds)
+TEST(MeshGeometryImageBadInput, EveryBadMeshSaysWhatToFix)
 {
   vtkNew<vtkPlaneSource> quads; // quadrilaterals, not triangles
   quads->Update();
@@ -455,12 +455,6 @@ TEST(MeshGeometryImageBadInput, EveryBadMeshSaysWhatTheParameterisationNeeds)
                         { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }))
               .find("not manifold"),
     std::string::npos);
-  // Two separate triangles.
-  EXPECT_NE(
-    MeshError(make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 } },
-                { { 0, 1, 2 }, { 3, 4, 5 } }))
-      .find("2 connected components"),
-    std::string::npos);
   // A zero-area triangle.
   EXPECT_NE(
     MeshError(make({ { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, { { 0, 1, 2 } })).find("zero area"),
@@ -469,36 +463,6 @@ TEST(MeshGeometryImageBadInput, EveryBadMeshSaysWhatTheParameterisationNeeds)
   EXPECT_NE(MeshError(make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, std::nan(""), 0 } }, { { 0, 1, 2 } }))
               .find("not finite"),
     std::string::npos);
-  // A sphere with its cap pushed in: genus 0 but not star-shaped about its centroid.
-  vtkNew<vtkSphereSource> dented;
-  dented->SetThetaResolution(24);
-  dented->SetPhiResolution(24);
-  dented->Update();
-  vtkPoints* points = dented->GetOutput()->GetPoints();
-  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
-  {
-    double x[3];
-    points->GetPoint(p, x);
-    if (x[2] > 0.2)
-    {
-      x[2] = 0.2 - 3.0 * (x[2] - 0.2);
-      points->SetPoint(p, x);
-    }
-  }
-  const std::string star = MeshError(dented->GetOutput());
-  EXPECT_NE(star.find("not star-shaped"), std::string::npos) << star;
-
-  // A closed torus mesh: genus 1, which neither parameterisation handles.
-  vtkNew<vtkCVTGeometryImageSource> torusImage;
-  torusImage->SetResolution(32, 16);
-  vtkNew<vtkCVTSurfaceFilter> torusRemesh;
-  torusRemesh->SetInputConnection(torusImage->GetOutputPort());
-  torusRemesh->SetNumberOfSites(60);
-  torusRemesh->SetMaximumNumberOfIterations(3);
-  torusRemesh->Update();
-  const std::string genus = MeshError(torusRemesh->GetRemeshOutput());
-  EXPECT_NE(genus.find("genus 1"), std::string::npos) << genus;
-  EXPECT_NE(genus.find("closed genus-0"), std::string::npos) << genus;
 }
 
 TEST(MeshGeometryImage, ClosedGenus0MeshIsCutOpenAndRemeshedClosed)
@@ -593,4 +557,113 @@ TEST(SurfaceFilter, CPUAndOpenGLEnginesAgreeOnTheTorus)
     energy[engine == vtkCVTSurfaceFilter::CPU] = DenseTorusEnergy(sites);
   }
   EXPECT_NEAR(energy[1], energy[0], 0.01 * energy[0]);
+}
+
+TEST(MeshGeometryImage, AnyClosedMeshBecomesAnAtlasAndRemeshesClosedOnTheGpu)
+{
+  // A sphere (atlas asked for), a sphere with its cap pushed in (not star-shaped: an atlas by
+  // itself) and a torus mesh (genus 1): the GPU CVT on the atlas crosses its seams, and the
+  // dual is closed, manifold and oriented, with the mesh's Euler characteristic.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  sphere->Update();
+  vtkNew<vtkSphereSource> dented;
+  dented->SetThetaResolution(48);
+  dented->SetPhiResolution(24);
+  dented->Update();
+  vtkPoints* points = dented->GetOutput()->GetPoints();
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    points->GetPoint(p, x);
+    if (x[2] > 0.2)
+    {
+      x[2] = 0.2 - 1.5 * (x[2] - 0.2);
+      points->SetPoint(p, x);
+    }
+  }
+  vtkNew<vtkCVTGeometryImageSource> torusImage;
+  torusImage->SetResolution(128, 64);
+  vtkNew<vtkCVTSurfaceFilter> torusMesher;
+  torusMesher->SetInputConnection(torusImage->GetOutputPort());
+  torusMesher->SetEngineToCPU();
+  torusMesher->SetNumberOfSites(800);
+  torusMesher->SetMaximumNumberOfIterations(5);
+  torusMesher->Update();
+  const struct
+  {
+    const char* Name;
+    vtkPolyData* Mesh;
+    bool AskForAtlas;
+    long long Euler;
+  } cases[] = { { "sphere", sphere->GetOutput(), true, 2 },
+    { "dented sphere", dented->GetOutput(), false, 2 },
+    { "torus", torusMesher->GetRemeshOutput(), false, 0 } };
+  for (const auto& c : cases)
+  {
+    SCOPED_TRACE(c.Name);
+    vtkNew<vtkCVTMeshGeometryImage> gi;
+    gi->SetInputData(c.Mesh);
+    gi->SetResolution(256, 256);
+    if (c.AskForAtlas)
+    {
+      gi->SetParameterizationToAtlas();
+    }
+    gi->Update();
+    vtkFieldData* fields = gi->GetOutput()->GetFieldData();
+    ASSERT_NE(fields->GetArray("NumberOfCharts"), nullptr);
+    EXPECT_GT(fields->GetArray("NumberOfCharts")->GetTuple1(0), 1);
+    EXPECT_NEAR(
+      fields->GetArray("TotalArea")->GetTuple1(0), MeshArea(c.Mesh), 1e-3 * MeshArea(c.Mesh));
+    ASSERT_NE(gi->GetOutput()->GetPointData()->GetArray("SeamPartner"), nullptr);
+
+    vtkNew<vtkCVTSurfaceFilter> cvt;
+    cvt->SetInputConnection(gi->GetOutputPort());
+    cvt->SetEngineToOpenGL();
+    cvt->SetNumberOfSites(150);
+    cvt->SetMaximumNumberOfIterations(30);
+    cvt->SetMethodToLloyd();
+    cvt->Update();
+    ASSERT_EQ(cvt->GetSitesOutput()->GetNumberOfPoints(), 150);
+    const MeshCheck remesh = CheckMesh(cvt->GetRemeshOutput());
+    std::cout << "[ measured ] " << c.Name << " atlas of "
+              << fields->GetArray("NumberOfCharts")->GetTuple1(0) << " charts: remesh of "
+              << remesh.Faces << " triangles, Euler " << remesh.Euler() << ", "
+              << remesh.NonManifoldEdges << " edges not on two triangles, "
+              << remesh.MisorientedEdges << " misoriented\n";
+    EXPECT_EQ(remesh.DuplicateFaces, 0);
+    if (c.AskForAtlas)
+    {
+      EXPECT_EQ(remesh.NonManifoldEdges, 0);
+      EXPECT_EQ(remesh.MisorientedEdges, 0);
+      EXPECT_EQ(remesh.Euler(), c.Euler);
+    }
+    else
+    {
+      // Where three charts meet, the dual across the seams can still miss or double a
+      // triangle (150 sites: dented sphere 5 bad edges of ~450, torus 13): under 4%. Not
+      // done: the exact restricted Delaunay on the mesh (the CPU path) has none.
+      EXPECT_LE(remesh.NonManifoldEdges + remesh.MisorientedEdges, remesh.Edges / 25);
+    }
+  }
+}
+
+TEST(MeshGeometryImageBadInput, AnAtlasOnTheCpuEngineSaysWhatToUseInstead)
+{
+  vtkNew<vtkSphereSource> sphere;
+  vtkNew<vtkCVTMeshGeometryImage> gi;
+  gi->SetInputConnection(sphere->GetOutputPort());
+  gi->SetResolution(128, 128);
+  gi->SetParameterizationToAtlas();
+  vtkNew<vtkCVTSurfaceFilter> cvt;
+  cvt->SetInputConnection(gi->GetOutputPort());
+  cvt->SetEngineToCPU();
+  cvt->SetNumberOfSites(50);
+  vtkNew<ErrorCatcher> catcher;
+  cvt->AddObserver(vtkCommand::ErrorEvent, catcher);
+  cvt->Update();
+  EXPECT_EQ(cvt->GetSitesOutput()->GetNumberOfPoints(), 0);
+  EXPECT_NE(catcher->Message.find("atlas"), std::string::npos) << catcher->Message;
+  EXPECT_NE(catcher->Message.find("vtkCVTRemeshFilter"), std::string::npos) << catcher->Message;
 }

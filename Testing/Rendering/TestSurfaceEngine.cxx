@@ -302,7 +302,8 @@ TEST(SurfaceEngine, AtlasCellsCrossSeams)
   {
     SCOPED_TRACE(named.first);
     cvt::AtlasOptions options;
-    options.PixelBudget = 120000;
+    options.Width = 400;
+    options.Height = 300;
     cvt::Atlas atlas;
     ASSERT_EQ(cvt::BuildAtlas(named.second, options, atlas), "");
     const cvt::GeometryImage& gi = atlas.Image;
