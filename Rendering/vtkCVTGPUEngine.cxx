@@ -51,8 +51,8 @@ bool vtkCVTGPUEngine::LabelAndReduce(cvt::CellSums& sums)
   using Clock = std::chrono::steady_clock;
   const auto millisecondsSince = [](Clock::time_point start)
   { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); };
-  for (int initialStep = this->Flooding->GetInitialStep(this->AdaptiveStep);;
-       initialStep = this->Flooding->GetFullStep())
+  for (int initialStep = this->Flooding->GetInitialStep(this->AdaptiveStep && this->CanAdaptStep());
+       ; initialStep = this->Flooding->GetFullStep())
   {
     auto start = Clock::now();
     if (!this->Label(initialStep))

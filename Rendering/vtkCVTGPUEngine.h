@@ -100,6 +100,10 @@ protected:
    * safeguard asks, timed. */
   bool LabelAndReduce(cvt::CellSums& sums);
 
+  /** Whether pixel distances to a site's pixel bound where its cell reaches, as the adaptive
+   * step needs (not on an atlas, whose cells cross seams). */
+  virtual bool CanAdaptStep() const { return true; }
+
   vtkNew<vtkCVTOpenGLContext> Context;
   std::unique_ptr<vtkCVTJumpFlooding> Flooding;
   bool AdaptiveStep = true;

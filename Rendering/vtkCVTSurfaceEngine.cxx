@@ -281,8 +281,8 @@ bool vtkCVTSurfaceEngine::Label(int initialStep)
   state->PushFramebufferBindings();
 
   // Seed, then 1+JFA from the seeds. Across an atlas's seams a site reaches the other chart
-  // only through the border pixels, possibly in the last passes: a second sweep carries it on,
-  // and pixel distances between charts mean nothing, so both sweeps start from the full step.
+  // only through the border pixels, possibly in the last passes: a second sweep carries it on
+  // (both from the full step: CanAdaptStep).
   in.Positions->Activate();
   in.Seams->Activate();
   const auto surfaceUniforms = [this](vtkShaderProgram* program)
@@ -292,14 +292,15 @@ bool vtkCVTSurfaceEngine::Label(int initialStep)
     program->SetUniformi("seams", this->Internal->Seams->GetTextureUnit());
     program->SetUniformi("hasSeams", this->HasSeams ? 1 : 0);
   };
-  const int step = this->HasSeams ? this->Flooding->GetFullStep() : initialStep;
   const int seeded = this->Flooding->Seed(window, in.Sites.GetCurrent(), in.Sites.GetSlotSize(),
     in.Sites.GetNumberOfSites(), this->GridSize, surfaceUniforms);
-  int labelled =
-    seeded < 0 ? -1 : this->Flooding->Flood(window, seeded, step, this->GridSize, surfaceUniforms);
+  int labelled = seeded < 0
+    ? -1
+    : this->Flooding->Flood(window, seeded, initialStep, this->GridSize, surfaceUniforms);
   if (this->HasSeams && labelled >= 0)
   {
-    labelled = this->Flooding->Flood(window, labelled, step, this->GridSize, surfaceUniforms);
+    labelled =
+      this->Flooding->Flood(window, labelled, initialStep, this->GridSize, surfaceUniforms);
   }
   in.Seams->Deactivate();
   in.Positions->Deactivate();
@@ -359,10 +360,6 @@ bool vtkCVTSurfaceEngine::Reduce(cvt::CellSums& sums, double& maximumRadius)
     sums.MomentZ[i] = texels[4 * i + 3];
     sums.Energy[i] = energy[i];
     maximumRadius = std::max(maximumRadius, static_cast<double>(radius[i]));
-  }
-  if (this->HasSeams)
-  {
-    maximumRadius = 0.0; // pixel distances across charts mean nothing; seams take the full step
   }
   if (!this->SumAcrossParts(sums) || !this->MaximumAcrossParts(maximumRadius))
   {

@@ -52,6 +52,7 @@ protected:
   void ReleaseObjects(vtkOpenGLRenderWindow* window) override;
   bool Label(int initialStep) override;
   bool Reduce(cvt::CellSums& sums, double& maximumRadius) override;
+  bool CanAdaptStep() const override { return !this->HasSeams; }
 
 private:
   vtkCVTSurfaceEngine(const vtkCVTSurfaceEngine&) = delete;
