@@ -25,8 +25,15 @@ constexpr int Free = -2; // a triangle waiting for a chart
 
 Vector3d PointOf(const SurfaceMesh& mesh, int v)
 {
-  return Vector3d(mesh.Points[3 * static_cast<size_t>(v)],
-    mesh.Points[3 * static_cast<size_t>(v) + 1], mesh.Points[3 * static_cast<size_t>(v) + 2]);
+  return Vector3d::Map(mesh.Point(v));
+}
+
+/// Triangle abc in its own plane: a at the origin, b on the x axis, c above it.
+std::array<Vector2d, 3> InPlane(const Vector3d& a, const Vector3d& b, const Vector3d& c)
+{
+  const Vector3d x = (b - a).normalized();
+  const Vector3d y = (b - a).cross(c - a).normalized().cross(x);
+  return { Vector2d(0, 0), Vector2d((b - a).dot(x), 0), Vector2d((c - a).dot(x), (c - a).dot(y)) };
 }
 
 double Cross2(const Vector2d& a, const Vector2d& b)
@@ -85,6 +92,7 @@ struct Chart
   std::vector<int> Points;
   std::vector<std::array<int, 3>> Corners; // per triangle: indices into Points
   std::vector<Vector2d> UV;                // per point, in surface units
+  bool Mapped = false;                     // UV holds a flip-free map, normalised
   Vector2d Lo{ 0, 0 }, Hi{ 0, 0 };         // the box round UV
   int X = 0, Y = 0;                        // the box's pixel origin in the image
 
@@ -245,9 +253,7 @@ bool ConformalMap(const SurfaceMesh& mesh, Chart& chart)
     {
       continue;
     }
-    const Vector3d x = (b - a).normalized();
-    const Vector3d y = normal.normalized().cross(x);
-    const Vector2d p[3] = { { 0, 0 }, { (b - a).dot(x), 0 }, { (d - a).dot(x), (d - a).dot(y) } };
+    const std::array<Vector2d, 3> p = InPlane(a, b, d);
     const double scale = 1.0 / (2.0 * std::sqrt(area));
     const int r1 = static_cast<int>(2 * f), r2 = r1 + 1;
     for (int j = 0; j < 3; ++j)
@@ -387,29 +393,25 @@ void NormalizeChart(const Faces& faces, Chart& chart)
 }
 
 /// Shelf packing of the charts' boxes at `scale` pixels per unit: tallest first, in rows of at
-/// most `rowWidth` pixels. Returns the size they take.
-std::array<long long, 2> Pack(
-  std::vector<Chart>& charts, double scale, int margin, long long rowWidth)
+/// most `rowWidth` pixels. Returns the height they take.
+long long Pack(std::vector<Chart>& charts, double scale, int margin, long long rowWidth)
 {
   std::vector<std::array<long long, 2>> sizes(charts.size());
-  long long area = 0, widest = 0;
   for (size_t c = 0; c < charts.size(); ++c)
   {
     const Vector2d extent = (charts[c].Hi - charts[c].Lo) * scale;
     sizes[c] = { static_cast<long long>(std::ceil(extent.x())) + 1 + 2 * margin,
       static_cast<long long>(std::ceil(extent.y())) + 1 + 2 * margin };
-    area += sizes[c][0] * sizes[c][1];
-    widest = std::max(widest, sizes[c][0]);
-  }
-  if (widest > rowWidth)
-  {
-    return { widest, 1LL << 40 }; // does not fit: a smaller scale is needed
+    if (sizes[c][0] > rowWidth)
+    {
+      return 1LL << 40; // does not fit: a smaller scale is needed
+    }
   }
   std::vector<size_t> order(charts.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(
     order.begin(), order.end(), [&](size_t a, size_t b) { return sizes[a][1] > sizes[b][1]; });
-  long long x = 0, y = 0, rowHeight = 0, width = 0;
+  long long x = 0, y = 0, rowHeight = 0;
   for (size_t c : order)
   {
     if (x + sizes[c][0] > rowWidth)
@@ -421,10 +423,9 @@ std::array<long long, 2> Pack(
     charts[c].X = static_cast<int>(x);
     charts[c].Y = static_cast<int>(y);
     x += sizes[c][0];
-    width = std::max(width, x);
     rowHeight = std::max(rowHeight, sizes[c][1]);
   }
-  return { width, y + rowHeight };
+  return y + rowHeight;
 }
 
 /// Barycentric coordinates of q in triangle abc.
@@ -457,6 +458,7 @@ std::vector<int> Rasterize(const SurfaceMesh& mesh, const Faces& faces,
     const Chart& chart = charts[id];
     bool overlaps = false;
     double weightSum = 0.0, surface = 0.0;
+    std::vector<size_t> drawn;
     for (size_t f = 0; f < chart.Triangles.size(); ++f)
     {
       const int t = chart.Triangles[f];
@@ -506,6 +508,7 @@ std::vector<int> Rasterize(const SurfaceMesh& mesh, const Faces& faces,
           atlas.Chart[p] = id;
           atlas.Triangle[p] = t;
           weightSum += weight;
+          drawn.push_back(p);
         }
       }
     }
@@ -515,21 +518,9 @@ std::vector<int> Rasterize(const SurfaceMesh& mesh, const Faces& faces,
     }
     // Each chart's pixels carry its whole area (pixel centres miss bits along its border).
     const double correction = weightSum > 0.0 ? surface / weightSum : 1.0;
-    const int x0 = chart.X, y0 = chart.Y;
-    const int x1 = std::min(image.Width,
-      x0 + static_cast<int>(std::ceil((chart.Hi.x() - chart.Lo.x()) * scale)) + 1 + 2 * margin);
-    const int y1 = std::min(image.Height,
-      y0 + static_cast<int>(std::ceil((chart.Hi.y() - chart.Lo.y()) * scale)) + 1 + 2 * margin);
-    for (int j = y0; j < y1; ++j)
+    for (size_t p : drawn)
     {
-      for (int i = x0; i < x1; ++i)
-      {
-        const size_t p = static_cast<size_t>(j) * image.Width + i;
-        if (atlas.Chart[p] == id)
-        {
-          image.AreaWeight[p] = static_cast<float>(image.AreaWeight[p] * correction);
-        }
-      }
+      image.AreaWeight[p] = static_cast<float>(image.AreaWeight[p] * correction);
     }
   }
   return overlapping;
@@ -551,7 +542,8 @@ void FindSeams(const SurfaceMesh& mesh, const Faces& faces, const std::vector<Ch
     int OtherChart;
   };
   std::vector<Cut> cuts;
-  std::vector<float> nearest(pixels, 2.0f);
+  std::vector<float> nearest(pixels, 2.0f); // distance to the nearest cut, in pixels
+  std::vector<float> along(pixels, 0.0f);   // where along that cut (0 at A, 1 at B)
   std::vector<int> cutOf(pixels, -1);
   // Where each chart keeps each triangle's corners.
   std::vector<std::pair<int, int>> placed(mesh.Triangles.size(), { -1, -1 });
@@ -606,7 +598,7 @@ void FindSeams(const SurfaceMesh& mesh, const Faces& faces, const std::vector<Ch
       const int index = static_cast<int>(cuts.size());
       cuts.push_back(cut);
       const Vector2d lo = cut.A.cwiseMin(cut.B), hi = cut.A.cwiseMax(cut.B);
-      const Vector2d along = cut.B - cut.A;
+      const Vector2d edge = cut.B - cut.A;
       for (int j = std::max(0, static_cast<int>(std::floor(lo.y() - 2.5)));
            j <= std::min(image.Height - 1, static_cast<int>(std::ceil(hi.y() + 1.5))); ++j)
       {
@@ -620,12 +612,13 @@ void FindSeams(const SurfaceMesh& mesh, const Faces& faces, const std::vector<Ch
           }
           const Vector2d centre(i + 0.5, j + 0.5);
           const double lambda = std::clamp(
-            along.squaredNorm() > 0.0 ? (centre - cut.A).dot(along) / along.squaredNorm() : 0.0,
-            0.0, 1.0);
-          const double distance = (centre - (cut.A + lambda * along)).norm();
+            edge.squaredNorm() > 0.0 ? (centre - cut.A).dot(edge) / edge.squaredNorm() : 0.0, 0.0,
+            1.0);
+          const double distance = (centre - (cut.A + lambda * edge)).norm();
           if (distance < nearest[p])
           {
             nearest[p] = static_cast<float>(distance);
+            along[p] = static_cast<float>(lambda);
             cutOf[p] = index;
           }
         }
@@ -640,11 +633,6 @@ void FindSeams(const SurfaceMesh& mesh, const Faces& faces, const std::vector<Ch
       continue;
     }
     const Cut& cut = cuts[cutOf[p]];
-    const Vector2d centre(p % image.Width + 0.5, static_cast<double>(p / image.Width) + 0.5);
-    const Vector2d along = cut.B - cut.A;
-    const double lambda = std::clamp(
-      along.squaredNorm() > 0.0 ? (centre - cut.A).dot(along) / along.squaredNorm() : 0.0, 0.0,
-      1.0);
     const Vector2d otherAlong = cut.OtherB - cut.OtherA;
     Vector2d inward(-otherAlong.y(), otherAlong.x());
     inward = inward.norm() > 0.0 ? Vector2d(inward.normalized()) : Vector2d(0, 0);
@@ -653,7 +641,7 @@ void FindSeams(const SurfaceMesh& mesh, const Faces& faces, const std::vector<Ch
       inward = -inward;
     }
     const Vector2d target =
-      cut.OtherA + lambda * otherAlong + std::max(0.5, static_cast<double>(nearest[p])) * inward;
+      cut.OtherA + along[p] * otherAlong + std::max(0.5, static_cast<double>(nearest[p])) * inward;
     const int ti = static_cast<int>(std::floor(target.x())),
               tj = static_cast<int>(std::floor(target.y()));
     double best = 1e300;
@@ -691,12 +679,11 @@ void MeasureDistortion(
         continue;
       }
       const auto& tri = mesh.Triangles[t];
-      const Vector3d a = PointOf(mesh, tri[0]), b = PointOf(mesh, tri[1]),
-                     c = PointOf(mesh, tri[2]);
-      const Vector3d x = (b - a).normalized();
-      const Vector3d y = faces.Normal[t].cross(x);
+      const std::array<Vector2d, 3> p =
+        InPlane(PointOf(mesh, tri[0]), PointOf(mesh, tri[1]), PointOf(mesh, tri[2]));
       Eigen::Matrix2d plane, uv;
-      plane << (b - a).dot(x), (c - a).dot(x), 0.0, (c - a).dot(y);
+      plane.col(0) = p[1] - p[0];
+      plane.col(1) = p[2] - p[0];
       const auto& k = chart.Corners[f];
       uv.col(0) = chart.UV[k[1]] - chart.UV[k[0]];
       uv.col(1) = chart.UV[k[2]] - chart.UV[k[0]];
@@ -748,7 +735,6 @@ std::string BuildAtlas(const SurfaceMesh& mesh, const AtlasOptions& options, Atl
   }
   // Charts whose map flips or folds are grown again with half the cone, until projection along
   // their mean normal is enough.
-  std::vector<char> mapped;
   for (int round = 0;; ++round)
   {
     if (round > 30)
@@ -756,14 +742,13 @@ std::string BuildAtlas(const SurfaceMesh& mesh, const AtlasOptions& options, Atl
       return "the mesh could not be cut into charts without folds";
     }
     std::vector<int> regrow;
-    mapped.resize(charts.size(), 0);
     for (size_t c = 0; c < charts.size(); ++c)
     {
-      if (mapped[c])
+      Chart& chart = charts[c];
+      if (chart.Mapped)
       {
         continue;
       }
-      Chart& chart = charts[c];
       IndexPoints(mesh, chart);
       bool ok = ConformalMap(mesh, chart) && !HasFlips(chart);
       if (!ok)
@@ -773,7 +758,7 @@ std::string BuildAtlas(const SurfaceMesh& mesh, const AtlasOptions& options, Atl
       if (ok)
       {
         NormalizeChart(faces, chart);
-        mapped[c] = 1;
+        chart.Mapped = true;
       }
       else
       {
@@ -786,7 +771,7 @@ std::string BuildAtlas(const SurfaceMesh& mesh, const AtlasOptions& options, Atl
     for (int attempt = 0; regrow.empty() && attempt < 30; ++attempt)
     {
       const double trial = 0.5 * (low + high);
-      if (Pack(charts, trial, margin, options.Width)[1] <= options.Height)
+      if (Pack(charts, trial, margin, options.Width) <= options.Height)
       {
         low = scale = trial;
       }
@@ -831,7 +816,6 @@ std::string BuildAtlas(const SurfaceMesh& mesh, const AtlasOptions& options, Atl
       pool.insert(pool.end(), charts[c].Triangles.begin(), charts[c].Triangles.end());
     }
     std::vector<Chart> kept;
-    std::vector<char> keptMapped;
     for (size_t c = 0; c < charts.size(); ++c)
     {
       if (!failed[c])
@@ -841,7 +825,6 @@ std::string BuildAtlas(const SurfaceMesh& mesh, const AtlasOptions& options, Atl
           chartOf[t] = static_cast<int>(kept.size());
         }
         kept.push_back(std::move(charts[c]));
-        keptMapped.push_back(1);
       }
     }
     for (int t : pool)
@@ -850,7 +833,6 @@ std::string BuildAtlas(const SurfaceMesh& mesh, const AtlasOptions& options, Atl
     }
     std::fill(pointStamp.begin(), pointStamp.end(), -1);
     charts = std::move(kept);
-    mapped = std::move(keptMapped);
     std::sort(pool.begin(), pool.end());
     GrowCharts(mesh, faces, pool, cone, chartOf, pointStamp, charts);
   }

@@ -23,7 +23,7 @@ struct AtlasOptions
   int Width = 512; // the image's size: the charts are scaled to fill it
   int Height = 512;
   double MaximumNormalAngle = 60.0; // degrees between a chart's seed and any of its triangles
-  int Gutter = 2;                   // empty pixels between charts
+  int Gutter = 2;                   // empty pixels round each chart's box (at least 1)
 };
 
 struct Atlas
