@@ -10,7 +10,6 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -163,11 +162,7 @@ bool vtkCVTMeshGeometryImage::BuildAtlas(const cvt::TriangleMesh& triangles, vtk
     return false;
   }
   cvtvtk::WriteGeometryImage(atlas.Image, output);
-  vtkNew<vtkIntArray> charts;
-  charts->SetName("ChartId");
-  charts->SetNumberOfTuples(static_cast<vtkIdType>(atlas.Chart.size()));
-  std::copy(atlas.Chart.begin(), atlas.Chart.end(), charts->GetPointer(0));
-  output->GetPointData()->AddArray(charts);
+  output->GetPointData()->AddArray(cvtvtk::IntArray("ChartId", atlas.Chart));
   vtkFieldData* fields = output->GetFieldData();
   cvtvtk::AddFieldValue(fields, "NumberOfCharts", atlas.NumberOfCharts);
   cvtvtk::AddFieldValue(fields, "SeamLength", atlas.SeamLength);

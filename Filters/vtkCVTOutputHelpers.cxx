@@ -94,16 +94,18 @@ vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<doub
   return points;
 }
 
-vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values)
+vtkSmartPointer<vtkIntArray> IntArray(const char* name, const std::vector<int>& values)
 {
   auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName("SiteId");
+  array->SetName(name);
   array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  for (size_t k = 0; k < values.size(); ++k)
-  {
-    array->SetValue(static_cast<vtkIdType>(k), values[k]);
-  }
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
   return array;
+}
+
+vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values)
+{
+  return IntArray("SiteId", values);
 }
 
 void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality)
@@ -334,11 +336,7 @@ void WriteGeometryImage(const cvt::GeometryImage& image, vtkImageData* output)
   output->GetPointData()->AddArray(mask);
   if (!image.SeamPartner.empty())
   {
-    vtkNew<vtkIntArray> seams;
-    seams->SetName("SeamPartner");
-    seams->SetNumberOfTuples(pixels);
-    std::copy(image.SeamPartner.begin(), image.SeamPartner.end(), seams->GetPointer(0));
-    output->GetPointData()->AddArray(seams);
+    output->GetPointData()->AddArray(IntArray("SeamPartner", image.SeamPartner));
   }
   vtkFieldData* fields = output->GetFieldData();
   AddFieldValue(fields, "WrapU", image.WrapU ? 1.0 : 0.0);

@@ -45,6 +45,9 @@ vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<doub
 /// Triangles (vertex ids) as the cells of a vtkPolyData's polys.
 vtkSmartPointer<vtkCellArray> TriangleCells(const std::vector<std::array<int, 3>>& triangles);
 
+/// An int array with this name and these values.
+vtkSmartPointer<vtkIntArray> IntArray(const char* name, const std::vector<int>& values);
+
 /// An int array named SiteId with these values (labels per pixel or point, sites per vertex).
 vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values);
 

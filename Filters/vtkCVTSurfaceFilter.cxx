@@ -194,10 +194,9 @@ bool vtkCVTSurfaceFilter::Compute(
   if (!choice.UseOpenGL && !image.SeamPartner.empty())
   {
     vtkErrorMacro("This geometry image is an atlas (charts joined by seams), which only the "
-                  "OpenGL engine follows, and the "
-      << (this->Engine == CPU ? "CPU engine was asked for" : "automatic choice is the CPU ")
-      << (this->Engine == CPU ? "" : ("(" + choice.Reason + ")"))
-      << "; set Engine to OpenGL, or remesh the mesh itself with CVT Remesh "
+                  "OpenGL engine follows, and this run is on the CPU ("
+      << choice.Reason
+      << "); set Engine to OpenGL, or remesh the mesh itself with CVT Remesh "
          "(vtkCVTRemeshFilter), exact on the CPU.");
     return false;
   }
