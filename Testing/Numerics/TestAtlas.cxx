@@ -49,23 +49,6 @@ double Distance(const cvt::GeometryImage& image, long long p, long long q)
   return std::sqrt(d2);
 }
 
-double Area(const cvt::SurfaceMesh& mesh)
-{
-  double area = 0.0;
-  for (const auto& t : mesh.Triangles)
-  {
-    const double* a = mesh.Point(t[0]);
-    const double* b = mesh.Point(t[1]);
-    const double* c = mesh.Point(t[2]);
-    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-    area += 0.5 *
-      std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) + std::pow(u[2] * v[0] - u[0] * v[2], 2) +
-        std::pow(u[0] * v[1] - u[1] * v[0], 2));
-  }
-  return area;
-}
-
 } // namespace
 
 TEST(Atlas, ChartsAreDisksThatCarryTheWholeSurface)
@@ -105,7 +88,7 @@ TEST(Atlas, ChartsAreDisksThatCarryTheWholeSurface)
       weights += image.AreaWeight[p];
       valid += image.IsValid(p) ? 1 : 0;
     }
-    const double area = Area(c.Mesh);
+    const double area = cvt::SurfaceArea(c.Mesh);
     EXPECT_NEAR(weights, area, 1e-4 * area);
     const double pixel = std::sqrt(area / valid);
     double farthest = 0.0;
@@ -140,7 +123,7 @@ TEST(Atlas, BorderPixelsOfAClosedSurfaceContinueAcrossSeams)
     {
       valid += image.IsValid(p) ? 1 : 0;
     }
-    const double pixel = std::sqrt(Area(c.Mesh) / valid);
+    const double pixel = std::sqrt(cvt::SurfaceArea(c.Mesh) / valid);
     long long border = 0, continued = 0, far = 0;
     double farthest = 0.0;
     for (int j = 1; j + 1 < image.Height; ++j)
