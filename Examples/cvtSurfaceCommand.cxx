@@ -73,9 +73,15 @@ std::string AtlasReport(vtkDataObject* image)
     return "";
   }
   const auto value = [fields](const char* name) { return fields->GetArray(name)->GetTuple1(0); };
+  int size[3] = { 0, 0, 0 };
+  if (vtkImageData* pixels = vtkImageData::SafeDownCast(image))
+  {
+    pixels->GetDimensions(size);
+  }
   std::ostringstream text;
-  text << std::setprecision(6) << "  atlas: " << value("NumberOfCharts") << " charts, seam length "
-       << value("SeamLength") << " (" << value("SeamPixels") << " seam pixels)\n"
+  text << std::setprecision(6) << "  atlas: " << value("NumberOfCharts") << " charts in a "
+       << size[0] << " x " << size[1] << " image, seam length " << value("SeamLength") << " ("
+       << value("SeamPixels") << " seam pixels)\n"
        << "  atlas area stretch min / max " << value("MinimumAreaStretch") << " / "
        << value("MaximumAreaStretch") << ", angle stretch max " << value("MaximumAngleStretch")
        << "\n";
