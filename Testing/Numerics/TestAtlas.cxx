@@ -176,3 +176,27 @@ TEST(Atlas, ATooSmallImageIsAnError)
   EXPECT_NE(error.find("give a larger resolution"), std::string::npos) << error;
   EXPECT_NE(cvt::BuildAtlas(cvt::SurfaceMesh(), options, atlas), "");
 }
+
+TEST(Atlas, SeamPartnersOutsideTheImageOrOnMaskedPixelsAreRefused)
+{
+  std::vector<Case> cases = Cases();
+  ASSERT_EQ(cases[0].Error, "");
+  cvt::GeometryImage image = cases[0].Atlas.Image;
+  long long masked = 0;
+  while (image.IsValid(masked))
+  {
+    ++masked;
+  }
+  for (const int partner :
+    { static_cast<int>(image.NumberOfPixels()), static_cast<int>(masked), -2 })
+  {
+    cvt::GeometryImage bad = image;
+    bad.SeamPartner[0] = partner;
+    const std::string error = cvt::CheckGeometryImage(bad, 1);
+    EXPECT_NE(error.find("seam partner (" + std::to_string(partner) + ")"), std::string::npos)
+      << error;
+  }
+  image.SeamPartner.pop_back();
+  EXPECT_NE(cvt::CheckGeometryImage(image, 1).find("seam partners do not hold one value per pixel"),
+    std::string::npos);
+}
