@@ -109,12 +109,25 @@ bool vtkCVTEGLRenderWindow::TryDisplay(void* displayHandle, const char* platform
       std::string("no OpenGL-capable EGL config on the ") + platformName + " platform";
     return false;
   }
-  const EGLint contextAttributes[] = { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 2,
-    EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
-  EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
+  // NVIDIA gives exactly the version asked for (a 3.2 context lacks the 4.0 entry points the
+  // engine calls, such as glBlendEquationi); Mesa gives its newest core version whatever is
+  // asked. So ask for the newest first.
+  EGLContext context = EGL_NO_CONTEXT;
+  const EGLint versions[][2] = { { 4, 6 }, { 4, 5 }, { 4, 3 }, { 4, 1 }, { 4, 0 } };
+  for (const auto& version : versions)
+  {
+    const EGLint contextAttributes[] = { EGL_CONTEXT_MAJOR_VERSION, version[0],
+      EGL_CONTEXT_MINOR_VERSION, version[1], EGL_CONTEXT_OPENGL_PROFILE_MASK,
+      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
+    context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
+    if (context != EGL_NO_CONTEXT)
+    {
+      break;
+    }
+  }
   if (context == EGL_NO_CONTEXT)
   {
-    this->LastError = std::string("no OpenGL 3.2 core context could be created on the ") +
+    this->LastError = std::string("no OpenGL 4.0 core context could be created on the ") +
       platformName + " platform";
     return false;
   }
@@ -163,10 +176,10 @@ void vtkCVTEGLRenderWindow::OpenGLInitContext()
   GLint major = 0, minor = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (major * 10 + minor < 32)
+  if (major * 10 + minor < 40)
   {
     this->LastError = "the EGL context offers OpenGL " + std::to_string(major) + "." +
-      std::to_string(minor) + ", but 3.2 or later is needed";
+      std::to_string(minor) + ", but 4.0 or later is needed";
     return;
   }
   this->GlewInitValid = true;

@@ -6,7 +6,7 @@
  * device platform on NVIDIA GPUs, Mesa's surfaceless platform otherwise, then the default
  * display), makes it current and hands it to VTK's OpenGL classes as a generic window.
  * VTK initialises GLEW through GLX, which fails with "no GLX display" under EGL although every
- * GL entry point loads; OpenGLInitContext accepts that case once GL >= 3.2 is confirmed.
+ * GL entry point loads; OpenGLInitContext accepts that case once GL >= 4.0 is confirmed.
  */
 #ifndef vtkCVTEGLRenderWindow_h
 #define vtkCVTEGLRenderWindow_h
@@ -25,7 +25,7 @@ public:
 
   /**
    * Create the EGL context and initialise VTK's OpenGL state on it. Returns false with a
-   * message in GetLastError() when no EGL context with OpenGL >= 3.2 can be made.
+   * message in GetLastError() when no EGL context with OpenGL >= 4.0 can be made.
    */
   bool CreateHeadlessContext();
   const std::string& GetLastError() const { return this->LastError; }

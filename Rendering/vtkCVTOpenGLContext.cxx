@@ -22,6 +22,27 @@ VTK_MODULE_INIT(vtkRenderingOpenGL2);
 
 vtkStandardNewMacro(vtkCVTOpenGLContext);
 
+namespace
+{
+// The engine calls OpenGL 4.0 functions (per-target blending, glBlendEquationi).
+constexpr int MinimumOpenGLVersion = 40;
+
+// The current context's version as 10 * major + minor (0 when GL cannot say).
+int CurrentOpenGLVersion()
+{
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  return 10 * major + minor;
+}
+
+std::string VersionText(int version)
+{
+  return version > 0 ? "OpenGL " + std::to_string(version / 10) + "." + std::to_string(version % 10)
+                     : "no usable OpenGL";
+}
+}
+
 struct vtkCVTOpenGLContext::SavedContext
 {
   EGLDisplay EglDisplay = EGL_NO_DISPLAY;
@@ -90,16 +111,13 @@ bool vtkCVTOpenGLContext::Initialize()
   if (this->HandedIn)
   {
     this->HandedIn->Initialize(); // nothing to do for a window that has its context
-    GLint major = 0;
     this->HandedIn->MakeCurrent();
-    if (this->HandedIn->IsCurrent())
-    {
-      glGetIntegerv(GL_MAJOR_VERSION, &major);
-    }
-    if (major < 3)
+    const int version = this->HandedIn->IsCurrent() ? CurrentOpenGLVersion() : 0;
+    if (version < MinimumOpenGLVersion)
     {
       this->LastError = std::string("the render window handed in (") +
-        this->HandedIn->GetClassName() + ") has no OpenGL >= 3.2 context";
+        this->HandedIn->GetClassName() + ") has no OpenGL >= 4.0 context (it has " +
+        VersionText(version) + ")";
       this->RestorePrevious();
       return false;
     }
@@ -128,21 +146,21 @@ bool vtkCVTOpenGLContext::Initialize()
       openGLWindow->SetOffScreenRendering(1);
       openGLWindow->SetSize(16, 16);
       openGLWindow->Initialize();
-      // VTK only creates a shader cache that compiles once the context has GL >= 3.2.
-      GLint major = 0;
+      int version = 0;
       if (openGLWindow->GetGenericContext())
       {
         openGLWindow->MakeCurrent();
-        glGetIntegerv(GL_MAJOR_VERSION, &major);
+        version = CurrentOpenGLVersion();
       }
-      if (major >= 3)
+      if (version >= MinimumOpenGLVersion)
       {
         this->Window = openGLWindow;
         this->Description = "X11 offscreen window";
       }
       else
       {
-        reasons += "X11 window: it could not be initialised with OpenGL >= 3.2. ";
+        reasons += "X11 window: it could not be initialised with OpenGL >= 4.0 (it has " +
+          VersionText(version) + "). ";
       }
     }
   }
@@ -156,7 +174,7 @@ bool vtkCVTOpenGLContext::Initialize()
     {
       reasons += "CVT_OPENGL_CONTEXT=none forbids every context. ";
     }
-    this->LastError = "no OpenGL >= 3.2 context is available (" + reasons +
+    this->LastError = "no OpenGL >= 4.0 context is available (" + reasons +
       ") Install Mesa's EGL (libegl1, libegl-mesa0) or a GPU driver with EGL, or run under an "
       "X server.";
     this->RestorePrevious();

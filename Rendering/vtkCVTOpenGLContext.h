@@ -1,6 +1,6 @@
 /**
  * @class   vtkCVTOpenGLContext
- * @brief   Finds an OpenGL >= 3.2 context for the CVT engine, with or without a display.
+ * @brief   Finds an OpenGL >= 4.0 context for the CVT engine, with or without a display.
  *
  * Tries, in order: a headless EGL context (vtkCVTEGLRenderWindow), then VTK's own offscreen
  * render window when an X display is set. The environment variable CVT_OPENGL_CONTEXT
@@ -30,7 +30,7 @@ public:
   /**
    * Use the context of this render window instead of finding one (the SetRenderWindow pattern of
    * VTK's GPU image filters: an application or a view shares its context). It must have, or be
-   * able to initialise, an OpenGL >= 3.2 context; it is never finalised here. nullptr goes back
+   * able to initialise, an OpenGL >= 4.0 context; it is never finalised here. nullptr goes back
    * to a context of our own. A context already in use is let go: its owner (an engine) must have
    * released its GL objects first.
    */

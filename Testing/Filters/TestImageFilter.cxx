@@ -623,7 +623,7 @@ TEST(ImageFilterBadInput, NoOpenGLContext)
   filter->SetEngineToOpenGL(); // Auto would take the CPU (tested in cli-errors.sh)
   const std::string message = RunExpectingError(filter);
   unsetenv("CVT_OPENGL_CONTEXT");
-  EXPECT_TRUE(Contains(message, "no OpenGL >= 3.2 context"));
+  EXPECT_TRUE(Contains(message, "no OpenGL >= 4.0 context"));
 }
 
 TEST(ImageFilterBadInput, OpenGLLostBetweenUpdates)
@@ -646,7 +646,7 @@ TEST(ImageFilterBadInput, OpenGLLostBetweenUpdates)
   filter->SetNumberOfSites(6);
   const std::string message = RunExpectingError(filter);
   unsetenv("CVT_OPENGL_CONTEXT");
-  EXPECT_TRUE(Contains(message, "no OpenGL >= 3.2 context")) << message;
+  EXPECT_TRUE(Contains(message, "no OpenGL >= 4.0 context")) << message;
   filter->SetNumberOfSites(7);
   filter->Update();
   EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 7);
@@ -665,7 +665,7 @@ TEST(ImageFilterBadInput, HandedInWindowWithoutAContext)
   const std::string message = RunExpectingError(filter);
   EXPECT_TRUE(Contains(message,
     "the render window handed in (vtkGenericOpenGLRenderWindow) "
-    "has no OpenGL >= 3.2 context"))
+    "has no OpenGL >= 4.0 context"))
     << message;
   filter->SetRenderWindow(nullptr);
   filter->Update();
