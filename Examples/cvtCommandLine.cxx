@@ -28,8 +28,9 @@ Input:
   --resolution N          grid size when there is no --input (default 512)
   --engine auto|cpu|opengl
                           image: opengl runs on the GPU; cpu integrates exact Voronoi polygons
-                          in parallel; auto (default) takes opengl on a hardware GPU and cpu when
-                          the only OpenGL is a software renderer (llvmpipe) or there is none
+                          in parallel; auto (default) takes cpu when the only OpenGL is a
+                          software renderer (llvmpipe) or there is none, and on a hardware GPU
+                          the engine that is faster on a calibration job
 Surface (cvt surface):
   --torus R r             a torus of ring radius R and tube radius r (default 1 0.4)
   --gi-resolution W H     geometry image size (default 1024 512)
@@ -40,8 +41,9 @@ Surface (cvt surface):
   --array NAME            with --input: a point array used as density (denser where larger)
   --engine auto|cpu|opengl
                           with --input: cpu (and auto) computes exact restricted Voronoi cells
-                          on the mesh, multi-threaded; opengl parameterises a disk or a
-                          star-shaped closed mesh as one geometry image (default auto)
+                          on the mesh, multi-threaded; opengl maps it into a geometry
+                          image (one chart for a disk or a star-shaped closed mesh, else an
+                          atlas of charts joined by seams) and runs on the GPU (default auto)
 Sites:
   --sites N               number of sites (default 1000)
   --initial-sites FILE    CSV of initial sites, one "x,y" per line (overrides --sites)

@@ -3,8 +3,9 @@
  * @brief   A CVT filter with an OpenGL engine and a CPU one: the Engine choice and the OpenGL
  *          engine's lifetime.
  *
- * Engine AUTO (default) takes OpenGL on a hardware GPU and the CPU engine (multi-threaded)
- * when the only OpenGL is a software renderer such as llvmpipe, or there is none; OPENGL is an
+ * Engine AUTO (default) takes the CPU engine (multi-threaded) when the only OpenGL is a software
+ * renderer such as llvmpipe, or there is none, and on a hardware GPU whichever engine is faster
+ * on a calibration job timed once per process; OPENGL is an
  * error without an OpenGL context. The choice and its reason are in the sites' field data
  * (Engine, EngineReason).
  *

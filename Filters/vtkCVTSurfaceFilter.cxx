@@ -190,7 +190,13 @@ bool vtkCVTSurfaceFilter::Compute(
       << " of a cell; use a finer resolution.");
   }
 
-  const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
+  cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
+  if (!choice.UseOpenGL && choice.HardwareOpenGL && !image.SeamPartner.empty())
+  {
+    choice.UseOpenGL = true;
+    choice.Name = "OpenGL";
+    choice.Reason += "; but only the OpenGL engine follows the seams of this atlas";
+  }
   if (!choice.UseOpenGL && !image.SeamPartner.empty())
   {
     vtkErrorMacro("This geometry image is an atlas (charts joined by seams), which only the "

@@ -13,7 +13,8 @@
  * Engine (vtkCVTGPUAlgorithm): OPENGL runs the geometry image on the GPU, as above; CPU
  * triangulates the geometry image (at most about 60 triangles per site) and remeshes it with
  * vtkCVTRemeshFilter's exact restricted Voronoi engine, the labels then being each pixel's
- * nearest site; AUTO (default) takes OpenGL on a hardware GPU, else the CPU. Optimiser
+ * nearest site; AUTO (default) takes the faster engine (see vtkCVTGPUAlgorithm), but OpenGL on
+ * a hardware GPU for an atlas, whose seams only the OpenGL engine follows. Optimiser
  * properties and stop rules: vtkCVTAlgorithm.
  *
  * Outputs:
