@@ -88,6 +88,16 @@ std::string AtlasReport(vtkDataObject* image)
   return text.str();
 }
 
+/// "N parts, genus G, L boundary loops" from the field data named with `prefix`.
+std::string TopologyText(vtkDataObject* data, const std::string& prefix)
+{
+  std::ostringstream text;
+  text << Field(data, (prefix + "Components").c_str()) << " parts, genus "
+       << Field(data, (prefix + "Genus").c_str()) << ", "
+       << Field(data, (prefix + "BoundaryLoops").c_str()) << " boundary loops";
+  return text.str();
+}
+
 /// cvt surface --input MESH on the CPU engine: restricted Voronoi cells on the mesh itself.
 int RunRemesh(const Options& options)
 {
@@ -130,14 +140,6 @@ int RunRemesh(const Options& options)
   {
     vtkFieldData* in = sites->GetFieldData();
     vtkFieldData* out = remesh->GetFieldData();
-    const auto topology = [](vtkDataObject* data, const std::string& prefix)
-    {
-      std::ostringstream text;
-      text << Field(data, (prefix + "Components").c_str()) << " parts, genus "
-           << Field(data, (prefix + "Genus").c_str()) << ", "
-           << Field(data, (prefix + "BoundaryLoops").c_str()) << " boundary loops";
-      return text.str();
-    };
     std::cout << std::setprecision(6) << "report:\n"
               << "  engine                      CPU: "
               << in->GetAbstractArray("EngineReason")->GetVariantValue(0).ToString() << "\n"
@@ -151,8 +153,8 @@ int RunRemesh(const Options& options)
               << "\n"
               << "  |grad F|                    " << Field(sites, "GradientNorm") << "\n"
               << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
-              << "  input topology              " << topology(sites, "Input") << "\n"
-              << "  remesh topology             " << topology(remesh, "") << "\n"
+              << "  input topology              " << TopologyText(sites, "Input") << "\n"
+              << "  remesh topology             " << TopologyText(remesh, "") << "\n"
               << "  sites added for topology    " << Field(sites, "AddedSites") << " (in "
               << Field(sites, "TopologyRounds") << " rounds)\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
@@ -187,6 +189,10 @@ int RunSurface(const Options& options)
   {
     return RunRemesh(options);
   }
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point from)
+  { return std::chrono::duration<double>(Clock::now() - from).count(); };
+  const Clock::time_point start = Clock::now();
   OutputFolder(options); // before any work: a folder that cannot be written fails now
   vtkSmartPointer<vtkAlgorithm> geometryImage = SurfaceGeometryImage(options);
   vtkNew<ErrorObserver> meshErrors;
@@ -196,16 +202,34 @@ int RunSurface(const Options& options)
   {
     Fail(meshErrors->Message);
   }
+  const double atlasSeconds = seconds(start);
   vtkNew<vtkCVTSurfaceFilter> cvt;
   cvt->SetInputConnection(geometryImage->GetOutputPort());
   SetOptimizer(options, cvt.Get());
   SetEngine(options, cvt.Get());
+  Clock::time_point stage = Clock::now();
   RunOrFail(
     cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTSurfaceFilter*>(f)->GetSitesOutput(); });
+  const double optimiseSeconds = seconds(stage);
 
   OutputFiles files(OutputFolder(options));
   vtkPolyData* sites = cvt->GetSitesOutput();
   vtkPolyData* remesh = cvt->GetRemeshOutput();
+  // A mesh's remesh is the restricted Delaunay triangulation of the GPU's sites on the mesh
+  // itself (exact, with the input's topology), not the dual of the geometry image's labels,
+  // which is not always manifold across an atlas's seams.
+  vtkNew<vtkCVTRemeshFilter> exact;
+  stage = Clock::now();
+  if (!options.Input.empty())
+  {
+    exact->SetInputConnection(geometryImage->GetInputConnection(0, 0));
+    exact->SetInitialSitesData(sites);
+    exact->SetMaximumNumberOfIterations(0);
+    RunOrFail(exact,
+      [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetRemeshOutput(); });
+    remesh = exact->GetRemeshOutput();
+  }
+  const double remeshSeconds = seconds(stage);
   Write<vtkXMLPolyDataWriter>(sites, files, "sites.vtp");
   Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), files, "labels.vti");
   Write<vtkXMLPolyDataWriter>(remesh, files, "remesh.vtp");
@@ -226,8 +250,16 @@ int RunSurface(const Options& options)
               << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
               << "  area weights min / max      " << Field(sites, "MinimumAreaWeight") << " / "
               << Field(sites, "MaximumAreaWeight") << "\n"
-              << AtlasReport(geometryImage->GetOutputDataObject(0))
-              << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
+              << AtlasReport(geometryImage->GetOutputDataObject(0));
+    if (!options.Input.empty())
+    {
+      std::cout << "  input topology              " << TopologyText(remesh, "Input") << "\n"
+                << "  remesh topology             " << TopologyText(remesh, "") << "\n"
+                << "  remesh made as               the restricted Delaunay triangulation of the "
+                   "sites on the mesh ("
+                << Field(exact->GetSitesOutput(), "AddedSites") << " sites added for topology)\n";
+    }
+    std::cout << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"
@@ -251,7 +283,8 @@ int RunSurface(const Options& options)
         std::cout << " " << 10 * b << "-" << 10 * (b + 1) << ":" << angles->GetTuple1(b);
       }
     }
-    std::cout << "\n";
+    std::cout << "\n  seconds: geometry image " << atlasSeconds << ", optimise " << optimiseSeconds
+              << ", remesh " << remeshSeconds << "\n";
   }
   PrintSummary(options, sites, cvt->GetContextDescription(),
     "sites.vtp sites.csv labels.vti remesh.vtp history.csv cvt.png", pictureWritten);

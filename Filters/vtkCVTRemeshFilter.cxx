@@ -17,6 +17,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
@@ -26,10 +27,12 @@
 #include "vtkVersionMacros.h" // for VTK_VERSION_CHECK
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <set>
 #include <string>
 
 vtkStandardNewMacro(vtkCVTRemeshFilter);
@@ -186,6 +189,38 @@ vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
   auto output = vtkSmartPointer<vtkPolyData>::New();
   output->ShallowCopy(triangles->GetOutput());
   return output;
+}
+
+/// The initial sites of the second input: its points, at least 3, finite and distinct.
+bool ReadGivenSites(vtkPointSet* given, std::vector<double>& sites, std::string& error)
+{
+  const vtkIdType count = given->GetNumberOfPoints();
+  if (count < 3)
+  {
+    error = "The initial sites input has " + std::to_string(count) +
+      " points; a remesh needs at least 3 sites.";
+    return false;
+  }
+  sites.resize(3 * static_cast<size_t>(count));
+  std::set<std::array<double, 3>> seen;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    std::array<double, 3> p;
+    given->GetPoint(i, p.data());
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      error = "Initial site " + std::to_string(i) + " has a NaN or infinite coordinate.";
+      return false;
+    }
+    if (!seen.insert(p).second)
+    {
+      error = "Initial site " + std::to_string(i) +
+        " repeats an earlier one; give distinct sites (two sites in one place share a cell).";
+      return false;
+    }
+    std::copy(p.begin(), p.end(), sites.begin() + 3 * i);
+  }
+  return true;
 }
 
 /// The labels output: the repaired mesh, its point data taken from the input's points.
@@ -359,10 +394,33 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
 //------------------------------------------------------------------------------
 vtkCVTRemeshFilter::vtkCVTRemeshFilter()
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2);
   // What progress bars show (ParaView: the label the user knows, not the class name).
   this->SetProgressText("CVT Remesh");
   this->Tolerance = 1e-7; // remeshes gain from the last small steps (valence, angles)
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTRemeshFilter::SetInitialSitesConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkCVTRemeshFilter::SetInitialSitesData(vtkDataObject* sites)
+{
+  this->SetInputData(1, sites);
+}
+
+//------------------------------------------------------------------------------
+int vtkCVTRemeshFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkPointSet");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -407,7 +465,8 @@ bool vtkCVTRemeshFilter::Compute(
   {
     vtkWarningMacro("The input mesh was repaired: " << repairs << ".");
   }
-  if (this->NumberOfSites < 3)
+  vtkPointSet* givenSites = vtkPointSet::GetData(inputVector[1], 0);
+  if (!givenSites && this->NumberOfSites < 3)
   {
     vtkErrorMacro("NumberOfSites is " << this->NumberOfSites << "; a remesh needs at least 3.");
     return false;
@@ -416,8 +475,20 @@ bool vtkCVTRemeshFilter::Compute(
     cvt::ComputeMeshTopology(mesh.NumberOfPoints(), mesh.Triangles);
 
   // --- Sites and the optimiser on the exact CPU engine.
-  const std::vector<double> initial = cvt::SampleMeshSites(
-    mesh, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed), &inputTopology);
+  std::vector<double> initial;
+  if (givenSites)
+  {
+    if (!ReadGivenSites(givenSites, initial, error))
+    {
+      vtkErrorMacro(<< error);
+      return false;
+    }
+  }
+  else
+  {
+    initial = cvt::SampleMeshSites(
+      mesh, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed), &inputTopology);
+  }
   cvt::RestrictedVoronoi engine;
   cvt::OptimizerOptions options = this->GetOptimizerOptions();
   options.LloydWarmUpIterations = std::min(5, this->MaximumNumberOfIterations);

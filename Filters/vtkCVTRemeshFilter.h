@@ -9,7 +9,10 @@
  * non-orientable surfaces are refused with a message saying where.
  *
  * NumberOfSites sites are drawn on the surface by area (times the optional DensityArray, a
- * point array: denser where larger; RandomSeed) and optimised by L-BFGS (default) or Lloyd
+ * point array: denser where larger; RandomSeed), or taken from the optional second input (the
+ * points of any vtkPointSet, SetInitialSitesConnection: the sites of another run, such as
+ * vtkCVTSurfaceFilter's on a geometry image of this mesh; MaximumNumberOfIterations 0 then
+ * remeshes them as they are), and optimised by L-BFGS (default) or Lloyd
  * (see vtkCVTAlgorithm; Tolerance defaults to 1e-7 here) on the restricted centroidal Voronoi
  * energy, computed exactly on the CPU (cvt::RestrictedVoronoi:
  * each triangle clipped by the sites' bisector planes, multi-threaded with vtkSMPTools).
@@ -49,6 +52,15 @@ public:
     RemeshPort = MeshPort
   };
 
+  ///@{
+  /**
+   * Optional second input: its points are the initial sites (NumberOfSites and RandomSeed are
+   * then unused). At least 3, finite and distinct; nullptr goes back to drawn sites.
+   */
+  void SetInitialSitesConnection(vtkAlgorithmOutput* output);
+  void SetInitialSitesData(vtkDataObject* sites);
+  ///@}
+
   /** A point array of the input used as density (denser where larger); empty: uniform. */
   vtkSetStdStringFromCharMacro(DensityArray);
   vtkGetCharFromStdStringMacro(DensityArray);
@@ -64,6 +76,7 @@ protected:
   ~vtkCVTRemeshFilter() override = default;
 
   const char* GetLabelsDataType() const override { return "vtkPolyData"; }
+  int FillInputPortInformation(int port, vtkInformation* info) override;
   bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   std::string DensityArray;

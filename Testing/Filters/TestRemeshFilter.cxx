@@ -34,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -557,6 +558,74 @@ TEST(RemeshFilter, OptionsTakeEffect)
   // ParaView's "Uniform density" is no array at all.
   auto uniform = run(vtkCVTRemeshFilter::LBFGS, 1, 0.0, 0.0, 7, "Uniform density");
   EXPECT_EQ(energy(uniform, 40), energy(lbfgs, 40));
+}
+
+// The sites of another run (vtkCVTSurfaceFilter's on a geometry image, say) are remeshed as
+// given with no iterations, or optimised further from there.
+TEST(RemeshFilter, InitialSitesAreRemeshedAsGivenOrOptimisedFurther)
+{
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  RemeshRun first(sphere, 200, 5);
+  ASSERT_TRUE(first.Status) << first.Log->Errors;
+  vtkPolyData* given = first.Filter->GetSitesOutput();
+
+  vtkNew<vtkCVTRemeshFilter> asGiven;
+  asGiven->SetInputData(sphere);
+  asGiven->SetInitialSitesData(given);
+  asGiven->SetNumberOfSites(7); // unused with initial sites
+  asGiven->SetMaximumNumberOfIterations(0);
+  asGiven->Update();
+  vtkPolyData* sites = asGiven->GetSitesOutput();
+  ASSERT_EQ(sites->GetNumberOfPoints(), 200);
+  for (vtkIdType i = 0; i < 200; ++i)
+  {
+    double a[3], b[3];
+    sites->GetPoint(i, a);
+    given->GetPoint(i, b);
+    EXPECT_NEAR(std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]), 0.0, 1e-12) << i;
+  }
+  EXPECT_EQ(Field(sites, "Iterations"), 0);
+  EXPECT_EQ(asGiven->GetRemeshOutput()->GetNumberOfPoints(), 200);
+  ExpectTopology(asGiven->GetRemeshOutput(), 1, 0, 0);
+  // Its energy is that of the given sites.
+  EXPECT_NEAR(Field(sites, "Energy"), Field(given, "Energy"), 1e-9 * Field(given, "Energy"));
+
+  vtkNew<vtkCVTRemeshFilter> further;
+  further->SetInputData(sphere);
+  further->SetInitialSitesData(given);
+  further->SetMaximumNumberOfIterations(30);
+  further->Update();
+  EXPECT_EQ(further->GetSitesOutput()->GetNumberOfPoints(), 200);
+  EXPECT_LT(Field(further->GetSitesOutput(), "Energy"), 0.999 * Field(given, "Energy"));
+
+  // Bad initial sites: too few, NaN, repeated.
+  const auto expectError = [&sphere](vtkPolyData* bad, const std::string& part)
+  {
+    vtkNew<vtkCVTRemeshFilter> filter;
+    vtkNew<cvttest::Messages> log;
+    filter->AddObserver(vtkCommand::ErrorEvent, log);
+    filter->SetInputData(sphere);
+    filter->SetInitialSitesData(bad);
+    filter->Update();
+    EXPECT_NE(log->Errors.find(part), std::string::npos) << "got: " << log->Errors;
+    ExpectEmptyOutputs(filter);
+  };
+  const auto pointsOf = [](std::vector<std::array<double, 3>> coordinates)
+  {
+    vtkNew<vtkPoints> points;
+    for (const auto& p : coordinates)
+    {
+      points->InsertNextPoint(p.data());
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    return data;
+  };
+  expectError(pointsOf({ { 1, 0, 0 }, { 0, 1, 0 } }), "has 2 points; a remesh needs at least 3");
+  expectError(pointsOf({ { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, std::nan("") } }),
+    "Initial site 2 has a NaN or infinite coordinate");
+  expectError(
+    pointsOf({ { 1, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 } }), "Initial site 2 repeats an earlier one");
 }
 
 TEST(RemeshFilter, BadInputGivesAClearErrorAndEmptyOutputs)
