@@ -1,5 +1,6 @@
 #include "vtkCVTEGLRenderWindow.h"
 
+#include "vtkCVTOpenGLHelpers.h"
 #include "vtkObjectFactory.h"
 #include "vtk_glew.h"
 
@@ -173,13 +174,11 @@ void vtkCVTEGLRenderWindow::OpenGLInitContext()
       reinterpret_cast<const char*>(glewGetErrorString(result));
     return;
   }
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (major * 10 + minor < 40)
+  const int version = cvtgl::CurrentOpenGLVersion();
+  if (version < cvtgl::MinimumOpenGLVersion)
   {
-    this->LastError = "the EGL context offers OpenGL " + std::to_string(major) + "." +
-      std::to_string(minor) + ", but 4.0 or later is needed";
+    this->LastError = "the EGL context offers " + cvtgl::OpenGLVersionText(version) +
+      ", but 4.0 or later is needed";
     return;
   }
   this->GlewInitValid = true;

@@ -3,6 +3,7 @@
 
 #include "vtkAutoInit.h"
 #include "vtkCVTEGLRenderWindow.h"
+#include "vtkCVTOpenGLHelpers.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderWindow.h"
@@ -21,27 +22,6 @@
 VTK_MODULE_INIT(vtkRenderingOpenGL2);
 
 vtkStandardNewMacro(vtkCVTOpenGLContext);
-
-namespace
-{
-// The engine calls OpenGL 4.0 functions (per-target blending, glBlendEquationi).
-constexpr int MinimumOpenGLVersion = 40;
-
-// The current context's version as 10 * major + minor (0 when GL cannot say).
-int CurrentOpenGLVersion()
-{
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  return 10 * major + minor;
-}
-
-std::string VersionText(int version)
-{
-  return version > 0 ? "OpenGL " + std::to_string(version / 10) + "." + std::to_string(version % 10)
-                     : "no usable OpenGL";
-}
-}
 
 struct vtkCVTOpenGLContext::SavedContext
 {
@@ -112,12 +92,12 @@ bool vtkCVTOpenGLContext::Initialize()
   {
     this->HandedIn->Initialize(); // nothing to do for a window that has its context
     this->HandedIn->MakeCurrent();
-    const int version = this->HandedIn->IsCurrent() ? CurrentOpenGLVersion() : 0;
-    if (version < MinimumOpenGLVersion)
+    const int version = this->HandedIn->IsCurrent() ? cvtgl::CurrentOpenGLVersion() : 0;
+    if (version < cvtgl::MinimumOpenGLVersion)
     {
       this->LastError = std::string("the render window handed in (") +
         this->HandedIn->GetClassName() + ") has no OpenGL >= 4.0 context (it has " +
-        VersionText(version) + ")";
+        cvtgl::OpenGLVersionText(version) + ")";
       this->RestorePrevious();
       return false;
     }
@@ -150,9 +130,9 @@ bool vtkCVTOpenGLContext::Initialize()
       if (openGLWindow->GetGenericContext())
       {
         openGLWindow->MakeCurrent();
-        version = CurrentOpenGLVersion();
+        version = cvtgl::CurrentOpenGLVersion();
       }
-      if (version >= MinimumOpenGLVersion)
+      if (version >= cvtgl::MinimumOpenGLVersion)
       {
         this->Window = openGLWindow;
         this->Description = "X11 offscreen window";
@@ -160,7 +140,7 @@ bool vtkCVTOpenGLContext::Initialize()
       else
       {
         reasons += "X11 window: it could not be initialised with OpenGL >= 4.0 (it has " +
-          VersionText(version) + "). ";
+          cvtgl::OpenGLVersionText(version) + "). ";
       }
     }
   }

@@ -18,6 +18,20 @@
 namespace cvtgl
 {
 
+int CurrentOpenGLVersion()
+{
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  return 10 * major + minor;
+}
+
+std::string OpenGLVersionText(int version)
+{
+  return version > 0 ? "OpenGL " + std::to_string(version / 10) + "." + std::to_string(version % 10)
+                     : "no usable OpenGL";
+}
+
 ScopedContext::ScopedContext(vtkCVTOpenGLContext* context)
   : Context(context)
 {

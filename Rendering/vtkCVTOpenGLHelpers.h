@@ -73,6 +73,16 @@ std::string GLErrorMessage(const char* where);
 /// the set-up of every "keep the nearest" scatter (seeds, constrained centroids).
 void BindForNearestScatter(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLRenderWindow* window);
 
+/// The OpenGL version the engines need, as 10 * major + minor: they call 4.0 functions
+/// (per-target blending, glBlendEquationi).
+constexpr int MinimumOpenGLVersion = 40;
+
+/// The current context's version as 10 * major + minor (0 when GL cannot say).
+int CurrentOpenGLVersion();
+
+/// "OpenGL 4.5" for 45; "no usable OpenGL" for 0.
+std::string OpenGLVersionText(int version);
+
 } // namespace cvtgl
 
 #endif
