@@ -19,16 +19,12 @@ namespace cvtvtk
 
 namespace
 {
-/// Median milliseconds of a Lloyd iteration (cell sums and the move to the centroids) of the
-/// OpenGL or the CPU engine on a small uniform job, after a warm-up; negative on failure.
-double MillisecondsPerIteration(bool openGL, vtkRenderWindow* window)
+/// Median milliseconds of a Lloyd iteration (cell sums and the move to the centroids) of
+/// `engine` on a small uniform job, after a warm-up; negative on failure.
+double MillisecondsPerIteration(cvt::Engine& engine)
 {
   const cvt::Grid grid = cvt::Grid::Square(512, -1.0, 1.0);
   const std::vector<float> density(static_cast<size_t>(grid.NumberOfPixels()), 1.0f);
-  vtkNew<vtkCVTOpenGLEngine> gpu;
-  gpu->SetRenderWindow(window);
-  cvt::ExactEngine exact;
-  cvt::Engine& engine = openGL ? static_cast<cvt::Engine&>(*gpu) : exact;
   cvt::CellSums sums;
   if (!engine.SetDomain(grid, density) || !engine.SetSites(cvt::SampleSites(grid, {}, 1000, 7)))
   {
@@ -79,8 +75,14 @@ EngineChoice CompareEngines(vtkRenderWindow* window, const std::string& contextD
   // A hardware GPU is not always the faster engine: on an H100 (a data-centre GPU with few
   // graphics-capable multiprocessors) the OpenGL engine took 13.7 ms per Lloyd iteration where
   // the CPU engine on 16 cores took 0.9 ms.
-  const double openGL = MillisecondsPerIteration(true, window);
-  const double cpu = MillisecondsPerIteration(false, nullptr);
+  double openGL = -1.0;
+  {
+    vtkNew<vtkCVTOpenGLEngine> gpu; // released before the CPU run
+    gpu->SetRenderWindow(window);
+    openGL = MillisecondsPerIteration(*gpu);
+  }
+  cvt::ExactEngine exact;
+  const double cpu = MillisecondsPerIteration(exact);
   char times[160];
   std::snprintf(times, sizeof(times),
     "a calibration Lloyd iteration (1000 sites, 512x512) took %.3g ms on OpenGL and %.3g ms on "
