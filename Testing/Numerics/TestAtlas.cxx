@@ -49,6 +49,16 @@ double Distance(const cvt::GeometryImage& image, long long p, long long q)
   return std::sqrt(d2);
 }
 
+long long ValidPixels(const cvt::GeometryImage& image)
+{
+  long long valid = 0;
+  for (long long p = 0; p < image.NumberOfPixels(); ++p)
+  {
+    valid += image.IsValid(p) ? 1 : 0;
+  }
+  return valid;
+}
+
 } // namespace
 
 TEST(Atlas, ChartsAreDisksThatCarryTheWholeSurface)
@@ -82,12 +92,11 @@ TEST(Atlas, ChartsAreDisksThatCarryTheWholeSurface)
     // The pixels carry the surface's area, and neighbouring pixels of one chart lie a pixel
     // apart on the surface: no fold, no jump.
     double weights = 0.0;
-    long long valid = 0;
     for (long long p = 0; p < image.NumberOfPixels(); ++p)
     {
       weights += image.AreaWeight[p];
-      valid += image.IsValid(p) ? 1 : 0;
     }
+    const long long valid = ValidPixels(image);
     const double area = cvt::SurfaceArea(c.Mesh);
     EXPECT_NEAR(weights, area, 1e-4 * area);
     const double pixel = std::sqrt(area / valid);
@@ -118,11 +127,7 @@ TEST(Atlas, BorderPixelsOfAClosedSurfaceContinueAcrossSeams)
     ASSERT_EQ(c.Error, "");
     const cvt::Atlas& atlas = c.Atlas;
     const cvt::GeometryImage& image = atlas.Image;
-    long long valid = 0;
-    for (long long p = 0; p < image.NumberOfPixels(); ++p)
-    {
-      valid += image.IsValid(p) ? 1 : 0;
-    }
+    const long long valid = ValidPixels(image);
     const double pixel = std::sqrt(cvt::SurfaceArea(c.Mesh) / valid);
     long long border = 0, continued = 0, far = 0;
     double farthest = 0.0;
