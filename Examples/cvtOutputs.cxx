@@ -122,7 +122,7 @@ bool WritePicture(vtkImageData* picture, const std::string& error, OutputFiles& 
 {
   if (!picture)
   {
-    // The results are written; only the picture needs OpenGL (the CPU engine does not).
+    // The results are written; the picture is only a view of them (nothing to draw).
     std::cerr << "cvt: warning: cvt.png not written: " << error << "\n";
     return false;
   }

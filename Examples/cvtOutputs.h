@@ -68,7 +68,7 @@ void Write(vtkDataObject* data, OutputFiles& files, const std::string& name)
 /// sites.csv (x,y or x,y,z per line: the --initial-sites format) and history.csv.
 void WriteCsv(vtkPolyData* sites, vtkTable* history, int dimensions, OutputFiles& files);
 
-/// cvt.png; without a picture (no OpenGL) only a warning. Returns whether it was written.
+/// cvt.png; without a picture (nothing to draw) only a warning. Returns whether it was written.
 bool WritePicture(vtkImageData* picture, const std::string& error, OutputFiles& files);
 
 /// The first value of a field-data array of the filters' outputs (their measures).

@@ -2,10 +2,9 @@
  * @class   vtkCVTSceneRenderer
  * @brief   Pictures of CVT results: cells coloured by site with sites on top, and remeshes.
  *
- * Render draws a 2D result on the CPU (no OpenGL needed, the same pixels on every machine);
- * RenderMesh renders a surface with VTK's own OpenGL renderer on the headless context of
- * vtkCVTOpenGLContext, so no display is needed. Colours come from seeded tables, so a result
- * always gives the same picture.
+ * Both draw on the CPU: no OpenGL and no display are needed, a picture costs milliseconds, and
+ * it has the same pixels on every machine. Colours come from seeded tables, so a result always
+ * gives the same picture.
  */
 #ifndef vtkCVTSceneRenderer_h
 #define vtkCVTSceneRenderer_h
@@ -18,7 +17,6 @@
 
 class vtkImageData;
 class vtkPolyData;
-class vtkRenderer;
 class vtkUnsignedCharArray;
 
 class CVTRENDERING_EXPORT vtkCVTSceneRenderer : public vtkObject
@@ -62,8 +60,9 @@ public:
   /**
    * Render a surface mesh (a remesh) of any shape and size, seen mostly along the thinnest axis
    * of its bounding box and tilted, the longest axis across, each triangle in its own colour
-   * with its edges drawn, into an RGB image. nullptr when there is no context. The picture
-   * belongs to this renderer, as with Render.
+   * (lit from the camera) with its edges drawn, into an RGB image of Size x 3/4 Size (a
+   * z-buffer, drawn on the CPU). nullptr with a message in GetLastError() when the mesh has no
+   * polygons. The picture belongs to this renderer, as with Render.
    */
   vtkImageData* RenderMesh(vtkPolyData* mesh);
   const std::string& GetLastError() const { return this->LastError; }
@@ -76,8 +75,6 @@ private:
   vtkCVTSceneRenderer(const vtkCVTSceneRenderer&) = delete;
   void operator=(const vtkCVTSceneRenderer&) = delete;
 
-  /** Renders the renderer's props in a headless window and reads the pixels into Picture. */
-  vtkImageData* Snapshot(vtkRenderer* renderer, int width, int height);
   /** Makes `pixels` (RGB, width x height) a new Picture and returns it. */
   vtkImageData* KeepPicture(vtkUnsignedCharArray* pixels, int width, int height);
 

@@ -81,6 +81,12 @@ if ! env -u DISPLAY "$CVT" surface --input "$T/tetra.off" --sites 20 --iteration
     --output "$T/tetra" > "$T/log" 2>&1 || ! grep -q "remesh topology *1 parts, genus 0, 0 boundary loops" "$T/log"; then
   echo "the OFF tetrahedron was not remeshed:"; cat "$T/log"; bad=1
 fi
+# A surface's picture is drawn on the CPU too: written without any OpenGL.
+if ! CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" surface --input "$T/tetra.off" --sites 20 \
+    --iterations 5 --output "$T/tetra-nogl" > "$T/log" 2>&1 || [ ! -s "$T/tetra-nogl/cvt.png" ] ||
+    grep -q "cvt.png not written" "$T/log"; then
+  echo "the surface picture was not written without OpenGL:"; cat "$T/log"; bad=1
+fi
 head -n 5 "$T/tetra.off" > "$T/truncated.off"
 expect_error "truncated.off' line 5: the file ends after 3 of its 4 vertices" surface --input "$T/truncated.off"
 # An explicit engine is used and named.

@@ -4,6 +4,7 @@
 #include "vtkCVTImageFilter.h"
 #include "vtkCVTSceneRenderer.h"
 
+#include "vtkCellArray.h"
 #include "vtkImageData.h"
 #include "vtkImageDifference.h"
 #include "vtkIntArray.h"
@@ -17,9 +18,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <string>
 
 TEST(RegressionImage, RenderedCVTMatchesTheBaseline)
@@ -150,4 +153,87 @@ TEST(RegressionImage, PictureOfBadLabelsIsRefused)
   EXPECT_EQ(scene->Render(labels, nullptr), nullptr);
   EXPECT_NE(scene->GetLastError().find("shorter than the image"), std::string::npos);
   EXPECT_EQ(scene->Render(nullptr, nullptr), nullptr);
+}
+
+// A box seen from above and in front, drawn on the CPU: framed whole, edges drawn, and only the
+// two faces turned to the camera visible. The box's triangles come bottom (hidden) after front
+// (seen), so a picture without depth testing would show the bottom's colours over the front.
+TEST(RegressionImage, MeshPictureShowsOnlyTheFacesInFront)
+{
+  // A 3 x 2 x 1 box: the camera looks along its thinnest axis (z) tilted towards -y, so the
+  // top (+z) and front (-y) faces are in view.
+  vtkNew<vtkPoints> points;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    points->InsertNextPoint(corner & 1 ? 3.0 : 0.0, corner & 2 ? 2.0 : 0.0, corner & 4 ? 1.0 : 0.0);
+  }
+  // Faces -x, +x, -y (front), +y, -z (bottom), +z (top), two triangles each.
+  const vtkIdType faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
+  vtkNew<vtkCellArray> triangles;
+  for (const auto& face : faces)
+  {
+    const vtkIdType first[3] = { face[0], face[1], face[2] };
+    const vtkIdType second[3] = { face[0], face[2], face[3] };
+    triangles->InsertNextCell(3, first);
+    triangles->InsertNextCell(3, second);
+  }
+  vtkNew<vtkPolyData> box;
+  box->SetPoints(points);
+  box->SetPolys(triangles);
+
+  vtkNew<vtkCVTSceneRenderer> scene;
+  scene->SetSize(200);
+  vtkSmartPointer<vtkImageData> picture = scene->RenderMesh(box);
+  ASSERT_NE(picture, nullptr) << scene->GetLastError();
+  int dims[3];
+  picture->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 200);
+  ASSERT_EQ(dims[1], 150);
+  const auto* rgb = static_cast<unsigned char*>(picture->GetScalarPointer());
+  std::map<std::array<int, 3>, int> colours; // colour -> pixels
+  int xMin = dims[0], xMax = -1, yMin = dims[1], yMax = -1;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      const unsigned char* p = rgb + 3 * (x + y * dims[0]);
+      const std::array<int, 3> colour = { p[0], p[1], p[2] };
+      if (colour == std::array<int, 3>{ 255, 255, 255 })
+      {
+        continue;
+      }
+      ++colours[colour];
+      xMin = std::min(xMin, x);
+      xMax = std::max(xMax, x);
+      yMin = std::min(yMin, y);
+      yMax = std::max(yMax, y);
+    }
+  }
+  // Framed: the whole box, clear of the picture's borders, across most of its width.
+  EXPECT_GT(xMin, 0);
+  EXPECT_LT(xMax, dims[0] - 1);
+  EXPECT_GT(yMin, 0);
+  EXPECT_LT(yMax, dims[1] - 1);
+  EXPECT_GT(xMax - xMin, dims[0] / 2);
+  // Edges drawn dark.
+  const std::array<int, 3> edge = { 25, 25, 25 };
+  EXPECT_GT(colours[edge], 100);
+  // Four triangles in view (top and front), each in its own colour; nothing of the others.
+  int large = 0;
+  for (const auto& [colour, count] : colours)
+  {
+    large += colour != edge && count >= 30;
+  }
+  EXPECT_EQ(large, 4);
+
+  // The same mesh gives the same picture; a mesh without polygons gives none and says why.
+  vtkSmartPointer<vtkImageData> again = scene->RenderMesh(box);
+  ASSERT_NE(again, nullptr);
+  EXPECT_TRUE(std::equal(
+    rgb, rgb + 3 * dims[0] * dims[1], static_cast<unsigned char*>(again->GetScalarPointer())));
+  vtkNew<vtkPolyData> pointsOnly;
+  pointsOnly->SetPoints(points);
+  EXPECT_EQ(scene->RenderMesh(pointsOnly), nullptr);
+  EXPECT_NE(scene->GetLastError().find("no triangles"), std::string::npos);
 }
