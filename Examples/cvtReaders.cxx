@@ -215,10 +215,15 @@ struct MeshFormat
 {
   const char* Extension;
   vtkSmartPointer<vtkAlgorithm> (*Open)(const std::string& path);
+  /// Read in a child first (ProbeReader). Our own OFF reader is not: the fuzz tests run it
+  /// in-process on damaged files and it refuses each with an error, and the probe would cost
+  /// a second read and a fork (0.06 s of 0.10 s on a 75k-triangle mesh).
+  bool Probe;
 };
-const MeshFormat MeshFormats[] = { { "vtp", Open<vtkXMLPolyDataReader> },
-  { "vtk", Open<vtkPolyDataReader> }, { "stl", Open<vtkSTLReader> }, { "ply", Open<vtkPLYReader> },
-  { "obj", Open<vtkOBJReader> }, { "off", Open<vtkCVTOFFReader> } };
+const MeshFormat MeshFormats[] = { { "vtp", Open<vtkXMLPolyDataReader>, true },
+  { "vtk", Open<vtkPolyDataReader>, true }, { "stl", Open<vtkSTLReader>, true },
+  { "ply", Open<vtkPLYReader>, true }, { "obj", Open<vtkOBJReader>, true },
+  { "off", Open<vtkCVTOFFReader>, false } };
 
 } // namespace
 
@@ -337,7 +342,10 @@ vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options)
     Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj .off");
   }
   vtkSmartPointer<vtkAlgorithm> reader = format->Open(options.Input);
-  ProbeReader(reader, options.Input);
+  if (format->Probe)
+  {
+    ProbeReader(reader, options.Input);
+  }
   return reader;
 }
 
