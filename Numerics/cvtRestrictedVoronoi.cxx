@@ -120,8 +120,8 @@ struct RestrictedVoronoi::Internals
   void ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
     std::vector<std::array<int, 4>>& triples, std::vector<SiteContact>& contacts,
     Scratch& scratch) const;
-  bool ClipToCell(int t, int site, Polygon& polygon, std::vector<std::uint32_t>& scratchIds,
-    std::vector<double>& scratchD2) const;
+  const Polygon* ClipToCell(int t, int site, Polygon& polygon, Polygon& spare,
+    std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const;
   void Integrate(int t, const double* s, const Polygon& polygon, Piece& piece) const;
   void WholeTriangle(int t, Polygon& polygon) const;
   void Barycentric(int t, const double* p, double* lambda) const;
@@ -167,21 +167,20 @@ void RestrictedVoronoi::Internals::WholeTriangle(int t, Polygon& polygon) const
 // Clips triangle t to the Voronoi cell of `site`: by the bisectors of its neighbours, nearest
 // first, until no further neighbour can reach the polygon (security radius). Mesh-edge points
 // are computed from the edge's end points in a fixed order, so the two triangles of an edge
-// agree on them exactly. Returns false when the polygon is empty.
-bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
-  std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const
+// agree on them exactly. Clipping alternates between `polygon` and `spare` (no copies); returns
+// the one that holds the result, or nullptr when it is empty.
+const Polygon* RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
+  Polygon& spare, std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const
 {
   const auto& tri = this->Mesh.Triangles[t];
   this->WholeTriangle(t, polygon);
-  // Clipping alternates between the output polygon and a scratch one (pointers, no copies).
   const double* s = &this->Sites[3 * static_cast<size_t>(site)];
   const size_t siteCount = this->Sites.size() / 3;
   const std::uint32_t* ids = &this->Neighbors[static_cast<size_t>(site) * this->K];
   const double* d2 = &this->NeighborDistance2[static_cast<size_t>(site) * this->K];
   size_t available = static_cast<size_t>(this->K);
-  Polygon scratch;
   Polygon* current = &polygon;
-  Polygon* clipped = &scratch;
+  Polygon* clipped = &spare;
   double dist[MaximumPolygonSize];
   double radius2 = -1.0; // of the polygon about the site; < 0: to be computed
   for (size_t n = 0;; ++n)
@@ -237,8 +236,7 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
       // Coincident sites: the lower index takes the cell, the other gets nothing.
       if (j < site)
       {
-        current->Size = 0;
-        return false;
+        return nullptr;
       }
       continue;
     }
@@ -259,8 +257,7 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
     }
     if (!anyIn)
     {
-      current->Size = 0;
-      return false;
+      return nullptr;
     }
     clipped->Size = 0;
     for (int v = 0; v < current->Size && clipped->Size < MaximumPolygonSize - 1; ++v)
@@ -309,16 +306,10 @@ bool RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
     radius2 = -1.0;
     if (current->Size < 3)
     {
-      current->Size = 0;
-      return false;
+      return nullptr;
     }
   }
-  if (current != &polygon)
-  {
-    std::copy(current->V, current->V + current->Size, polygon.V);
-    polygon.Size = current->Size;
-  }
-  return polygon.Size >= 3;
+  return current->Size >= 3 ? current : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -660,6 +651,7 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
     return;
   }
   // Breadth-first over the cells that reach the triangle, from its corners' sites.
+  Polygon spare;
   const size_t siteCount = this->Sites.size() / 3;
   if (scratch.Stamp.size() != siteCount)
   {
@@ -684,21 +676,22 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
   for (size_t next = 0; next < queue.size(); ++next)
   {
     const int site = queue[next];
-    if (!this->ClipToCell(t, site, polygon, scratch.Ids, scratch.D2))
+    const Polygon* clipped = this->ClipToCell(t, site, polygon, spare, scratch.Ids, scratch.D2);
+    if (!clipped)
     {
       continue;
     }
-    this->Integrate(t, &this->Sites[3 * static_cast<size_t>(site)], polygon, piece);
+    this->Integrate(t, &this->Sites[3 * static_cast<size_t>(site)], *clipped, piece);
     piece.Site = site;
     pieces.push_back(piece);
-    for (int v = 0; v < polygon.Size; ++v)
+    for (int v = 0; v < clipped->Size; ++v)
     {
-      const int label = polygon.V[v].Label;
+      const int label = clipped->V[v].Label;
       if (label >= 0)
       {
         enqueue(label);
       }
-      const int before = polygon.V[(v + polygon.Size - 1) % polygon.Size].Label;
+      const int before = clipped->V[(v + clipped->Size - 1) % clipped->Size].Label;
       if (dual && label >= 0 && before >= 0)
       {
         // Around this point the cells come in the order site, before, label (counter-
@@ -711,7 +704,7 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
     if (dual)
     {
       contacts.emplace_back();
-      this->Contact(t, site, polygon, contacts.back());
+      this->Contact(t, site, *clipped, contacts.back());
     }
   }
 }
