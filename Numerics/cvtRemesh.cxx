@@ -742,19 +742,28 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceM
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
   }
-  // The triangles a point nearest to vertex v is measured against.
+  // The triangles a point nearest to vertex v is measured against: v's own first (most points
+  // are nearest to one of them), then those round its neighbours.
   std::vector<std::vector<int>> near(static_cast<size_t>(vertices));
   for (int v = 0; v < vertices; ++v)
   {
-    auto& n = near[static_cast<size_t>(v)];
-    n = around[static_cast<size_t>(v)];
+    const std::vector<int>& own = around[static_cast<size_t>(v)];
+    std::vector<int> others;
     for (int w : neighbours[static_cast<size_t>(v)])
     {
-      n.insert(
-        n.end(), around[static_cast<size_t>(w)].begin(), around[static_cast<size_t>(w)].end());
+      for (int t : around[static_cast<size_t>(w)])
+      {
+        if (std::find(own.begin(), own.end(), t) == own.end())
+        {
+          others.push_back(t);
+        }
+      }
     }
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
+    std::sort(others.begin(), others.end());
+    others.erase(std::unique(others.begin(), others.end()), others.end());
+    auto& n = near[static_cast<size_t>(v)];
+    n = own;
+    n.insert(n.end(), others.begin(), others.end());
   }
   // The input points nearest to each vertex (used vertices only).
   std::vector<double> used;
@@ -802,6 +811,10 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceM
           ClosestPointOnTriangle(
             surface.Point(p), point(c[0]), point(c[1]), point(c[2]), q, weights);
           nearest = std::min(nearest, Distance2(surface.Point(p), q));
+          if (nearest <= largest)
+          {
+            break; // not the farthest point: the rest of its triangles cannot change that
+          }
         }
         if (nearest > largest)
         {
