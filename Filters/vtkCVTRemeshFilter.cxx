@@ -181,12 +181,20 @@ vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
   merge->ConvertLinesToPointsOff();
   merge->ConvertPolysToLinesOff();
   merge->ConvertStripsToPolysOff();
+  merge->Update();
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  vtkPolyData* merged = merge->GetOutput();
+  if (merged->GetNumberOfVerts() + merged->GetNumberOfLines() + merged->GetNumberOfStrips() == 0 &&
+    merged->GetPolys()->IsHomogeneous() == 3)
+  {
+    output->ShallowCopy(merged); // triangles only already (most meshes): nothing to split
+    return output;
+  }
   vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(merge->GetOutputPort());
+  triangles->SetInputData(merged);
   triangles->PassVertsOff();
   triangles->PassLinesOff();
   triangles->Update();
-  auto output = vtkSmartPointer<vtkPolyData>::New();
   output->ShallowCopy(triangles->GetOutput());
   return output;
 }
