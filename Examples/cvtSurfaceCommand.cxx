@@ -205,6 +205,7 @@ int RunSurface(const Options& options)
   const double atlasSeconds = seconds(start);
   vtkNew<vtkCVTSurfaceFilter> cvt;
   cvt->SetInputConnection(geometryImage->GetOutputPort());
+  cvt->SetDensityArray(options.Array.c_str()); // the mesh's array, carried onto the pixels
   SetOptimizer(options, cvt.Get());
   SetEngine(options, cvt.Get());
   Clock::time_point stage = Clock::now();
@@ -224,6 +225,7 @@ int RunSurface(const Options& options)
   {
     exact->SetInputConnection(geometryImage->GetInputConnection(0, 0));
     exact->SetInitialSitesData(sites);
+    exact->SetDensityArray(options.Array.c_str());
     exact->SetMaximumNumberOfIterations(0);
     RunOrFail(exact,
       [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetRemeshOutput(); });

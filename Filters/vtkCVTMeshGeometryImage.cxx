@@ -7,6 +7,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellLocator.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -19,10 +20,58 @@
 #include "vtkTriangle.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
 vtkStandardNewMacro(vtkCVTMeshGeometryImage);
+
+namespace
+{
+/// The mesh's point arrays at the pixels: each pixel interpolates the points of the triangle it
+/// samples (`triangles[sources.Triangle[p]]`, whose point ids `inputPoint` maps to the mesh's,
+/// or keeps as they are when empty); pixels without a triangle get zeros.
+void CarryPointData(vtkPolyData* mesh, const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<int>& inputPoint, const cvt::PixelSources& sources, vtkImageData* output)
+{
+  vtkPointData* in = mesh->GetPointData();
+  vtkPointData* out = output->GetPointData();
+  if (in->GetNumberOfArrays() == 0)
+  {
+    return;
+  }
+  const vtkIdType pixels = output->GetNumberOfPoints();
+  vtkNew<vtkPointData> carried;
+  carried->InterpolateAllocate(in, pixels);
+  vtkNew<vtkIdList> corners;
+  corners->SetNumberOfIds(3);
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    const int t = sources.Triangle[p];
+    if (t < 0)
+    {
+      carried->NullData(p);
+      continue;
+    }
+    double weights[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int point = triangles[t][k];
+      corners->SetId(k, inputPoint.empty() ? point : inputPoint[point]);
+      weights[k] = sources.Barycentric[3 * p + k];
+    }
+    carried->InterpolatePoint(in, p, corners, weights);
+  }
+  for (int a = 0; a < carried->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = carried->GetAbstractArray(a);
+    if (array->GetName() && !out->HasArray(array->GetName()))
+    {
+      out->AddArray(array);
+    }
+  }
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkCVTMeshGeometryImage::vtkCVTMeshGeometryImage()
@@ -109,17 +158,19 @@ int vtkCVTMeshGeometryImage::RequestData(
   // (several parts, genus, boundary loops, shapes not star-shaped) or when asked for.
   if (this->Parameterization == ATLAS || !problem.empty())
   {
-    return this->BuildAtlas(mesh, output) ? 1 : 0;
+    return this->BuildAtlas(input, mesh, output) ? 1 : 0;
   }
+  cvt::PixelSources sources;
   if (closed)
   {
     cvt::GeometryImage image;
     std::string error;
-    if (!this->SampleClosedMesh(input, image, error))
+    if (!this->SampleClosedMesh(input, image, sources, error))
     {
-      return this->BuildAtlas(mesh, output) ? 1 : 0;
+      return this->BuildAtlas(input, mesh, output) ? 1 : 0;
     }
     cvtvtk::WriteGeometryImage(image, output);
+    CarryPointData(input, mesh.Triangles, {}, sources, output);
     return 1;
   }
   std::vector<double> uv;
@@ -130,12 +181,14 @@ int vtkCVTMeshGeometryImage::RequestData(
     return 0;
   }
   cvtvtk::WriteGeometryImage(
-    cvt::ResampleMesh(mesh, uv, this->Resolution[0], this->Resolution[1]), output);
+    cvt::ResampleMesh(mesh, uv, this->Resolution[0], this->Resolution[1], &sources), output);
+  CarryPointData(input, mesh.Triangles, {}, sources, output);
   return 1;
 }
 
 //------------------------------------------------------------------------------
-bool vtkCVTMeshGeometryImage::BuildAtlas(const cvt::TriangleMesh& triangles, vtkImageData* output)
+bool vtkCVTMeshGeometryImage::BuildAtlas(
+  vtkPolyData* input, const cvt::TriangleMesh& triangles, vtkImageData* output)
 {
   cvt::SurfaceMesh mesh;
   mesh.Points = triangles.Points;
@@ -163,6 +216,8 @@ bool vtkCVTMeshGeometryImage::BuildAtlas(const cvt::TriangleMesh& triangles, vtk
   }
   cvtvtk::WriteGeometryImage(atlas.Image, output);
   output->GetPointData()->AddArray(cvtvtk::IntArray("ChartId", atlas.Chart));
+  // The repairs may have copied points: SourceIds names each one's input point.
+  CarryPointData(input, mesh.Triangles, mesh.SourceIds, atlas.Sources, output);
   vtkFieldData* fields = output->GetFieldData();
   cvtvtk::AddFieldValue(fields, "NumberOfCharts", atlas.NumberOfCharts);
   cvtvtk::AddFieldValue(fields, "SeamLength", atlas.SeamLength);
@@ -175,7 +230,7 @@ bool vtkCVTMeshGeometryImage::BuildAtlas(const cvt::TriangleMesh& triangles, vtk
 
 //------------------------------------------------------------------------------
 bool vtkCVTMeshGeometryImage::SampleClosedMesh(
-  vtkPolyData* mesh, cvt::GeometryImage& image, std::string& error)
+  vtkPolyData* mesh, cvt::GeometryImage& image, cvt::PixelSources& sources, std::string& error)
 {
   // The centre: the area-weighted centroid. Every triangle must face away from it (or every
   // one towards it): then each ray from the centre meets the surface once.
@@ -236,6 +291,8 @@ bool vtkCVTMeshGeometryImage::SampleClosedMesh(
   image.Height = h;
   image.WrapU = true;
   image.Position.resize(3 * static_cast<size_t>(w) * h);
+  sources.Triangle.assign(static_cast<size_t>(w) * h, -1);
+  sources.Barycentric.assign(3 * static_cast<size_t>(w) * h, 0.0f);
   const double pi = vtkMath::Pi();
   for (int j = 0; j < h; ++j)
   {
@@ -247,11 +304,12 @@ bool vtkCVTMeshGeometryImage::SampleClosedMesh(
         std::sin(polar) * std::sin(azimuth), -std::cos(polar) };
       double end[3], hit[3], pcoords[3], t = 0.0;
       int subId = 0;
+      vtkIdType cell = -1;
       for (int k = 0; k < 3; ++k)
       {
         end[k] = centre[k] + 2.0 * radius * direction[k];
       }
-      if (!locator->IntersectWithLine(centre, end, 1e-9, t, hit, pcoords, subId))
+      if (!locator->IntersectWithLine(centre, end, 1e-9, t, hit, pcoords, subId, cell))
       {
         error = "a ray from the centroid missed the surface";
         return false;
@@ -261,6 +319,11 @@ bool vtkCVTMeshGeometryImage::SampleClosedMesh(
       {
         image.Position[3 * p + k] = static_cast<float>(hit[k]);
       }
+      // A triangle's parametric coordinates (r, s) weigh its points 1 - r - s, r, s.
+      sources.Triangle[p] = static_cast<int>(cell);
+      sources.Barycentric[3 * p] = static_cast<float>(1.0 - pcoords[0] - pcoords[1]);
+      sources.Barycentric[3 * p + 1] = static_cast<float>(pcoords[0]);
+      sources.Barycentric[3 * p + 2] = static_cast<float>(pcoords[1]);
     }
   }
   image.Normal = cvt::NormalsFromPositions(image);

@@ -21,6 +21,11 @@
  * (Minimum/MaximumAreaStretch, MaximumAngleStretch). Pinched points are split and triangles
  * oriented first (a warning says so).
  *
+ * Every point array of the mesh (a density, say, for vtkCVTSurfaceFilter's DensityArray) is
+ * carried onto the pixels: each pixel interpolates the triangle it samples; pixels off the
+ * surface get zeros. Arrays named like the image's own (Position, Normal, AreaWeight, Mask,
+ * ChartId, SeamPartner) are left out.
+ *
  * The mesh must be made of triangles with finite coordinates, no zero-area triangle and every
  * edge on at most two triangles; a non-orientable surface is refused. Each is an error saying
  * what to fix.
@@ -36,6 +41,7 @@
 namespace cvt
 {
 struct GeometryImage;
+struct PixelSources;
 struct TriangleMesh;
 }
 class vtkPolyData;
@@ -78,8 +84,9 @@ protected:
   int Parameterization = AUTOMATIC;
 
 private:
-  bool BuildAtlas(const cvt::TriangleMesh& mesh, vtkImageData* output);
-  bool SampleClosedMesh(vtkPolyData* mesh, cvt::GeometryImage& image, std::string& error);
+  bool BuildAtlas(vtkPolyData* input, const cvt::TriangleMesh& mesh, vtkImageData* output);
+  bool SampleClosedMesh(
+    vtkPolyData* mesh, cvt::GeometryImage& image, cvt::PixelSources& sources, std::string& error);
   vtkCVTMeshGeometryImage(const vtkCVTMeshGeometryImage&) = delete;
   void operator=(const vtkCVTMeshGeometryImage&) = delete;
 };

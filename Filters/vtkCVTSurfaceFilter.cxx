@@ -9,10 +9,12 @@
 #include "vtkCVTRemeshFilter.h"
 #include "vtkCVTSurfaceEngine.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -22,10 +24,12 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkTable.h"
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -71,6 +75,76 @@ AreaWeights MeasureAreaWeights(const cvt::GeometryImage& image)
     }
   }
   return weights;
+}
+
+/// The point arrays of the geometry image that describe the surface (a mesh's, carried by
+/// vtkCVTMeshGeometryImage), at `pixels`, added to `points`: the image's own arrays (positions,
+/// normals, weights, mask, charts, seams) are left out.
+void CopySurfaceArrays(
+  vtkPointData* image, const std::vector<long long>& pixels, vtkPointData* points)
+{
+  static const std::set<std::string> own = { "Position", "Normal", "AreaWeight", "Mask", "ChartId",
+    "SeamPartner", "SiteId" };
+  vtkNew<vtkIdList> ids;
+  ids->SetNumberOfIds(static_cast<vtkIdType>(pixels.size()));
+  for (size_t i = 0; i < pixels.size(); ++i)
+  {
+    ids->SetId(static_cast<vtkIdType>(i), pixels[i]);
+  }
+  for (int a = 0; a < image->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = image->GetAbstractArray(a);
+    if (!array->GetName() || own.count(array->GetName()) || points->HasArray(array->GetName()))
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> values = vtk::TakeSmartPointer(array->NewInstance());
+    values->SetName(array->GetName());
+    values->SetNumberOfComponents(array->GetNumberOfComponents());
+    values->SetNumberOfTuples(ids->GetNumberOfIds());
+    array->GetTuples(ids, values);
+    points->AddArray(values);
+  }
+}
+
+/// The density array `name` of the geometry image at every pixel: one component, finite and
+/// not negative, positive somewhere on the surface; else false with what to fix.
+bool ReadDensity(vtkImageData* input, const std::string& name, const cvt::GeometryImage& image,
+  std::vector<float>& density, std::string& error)
+{
+  vtkDataArray* array = input->GetPointData()->GetArray(name.c_str());
+  if (!array || array->GetNumberOfComponents() != 1)
+  {
+    error = "The geometry image has no one-component point array '" + name +
+      "' to use as density; name a point array (vtkCVTMeshGeometryImage carries the mesh's) or "
+      "leave DensityArray empty.";
+    return false;
+  }
+  density.assign(static_cast<size_t>(image.NumberOfPixels()), 0.0f);
+  double largest = 0.0;
+  for (long long p = 0; p < image.NumberOfPixels(); ++p)
+  {
+    if (!image.IsValid(p))
+    {
+      continue;
+    }
+    const double value = array->GetComponent(p, 0);
+    if (!std::isfinite(value) || value < 0.0)
+    {
+      error = "The density array '" + name + "' has " +
+        (std::isfinite(value) ? "negative" : "NaN or infinite") +
+        " values on the surface; give finite values of 0 or more.";
+      return false;
+    }
+    density[p] = static_cast<float>(value);
+    largest = std::max(largest, value);
+  }
+  if (largest <= 0.0)
+  {
+    error = "The density array '" + name + "' is zero everywhere on the surface.";
+    return false;
+  }
+  return true;
 }
 }
 
@@ -181,6 +255,20 @@ bool vtkCVTSurfaceFilter::Compute(
     return false;
   }
   const AreaWeights weights = MeasureAreaWeights(image);
+  std::vector<float> density;
+  if (!this->DensityArray.empty() && this->DensityArray != UniformDensityName())
+  {
+    if (!ReadDensity(input, this->DensityArray, image, density, error))
+    {
+      vtkErrorMacro("" << error);
+      return false;
+    }
+    // A pixel's mass is its area times the density there (the measures above stay areas).
+    for (long long p = 0; p < image.NumberOfPixels(); ++p)
+    {
+      image.AreaWeight[p] *= density[p];
+    }
+  }
   // A cell should cover a good many pixels, even where pixels are largest.
   const double cellArea = weights.Total / this->NumberOfSites;
   if (weights.Maximum > cellArea / 8.0)
@@ -206,9 +294,9 @@ bool vtkCVTSurfaceFilter::Compute(
          "(vtkCVTRemeshFilter), exact on the CPU.");
     return false;
   }
-  const bool computed = choice.UseOpenGL
-    ? this->RunOnGPU(input, image, choice.Reason, outputVector)
-    : this->RunOnCPU(input, image, weights.ValidPixels, choice.Reason, outputVector);
+  const bool computed = choice.UseOpenGL ? this->RunOnGPU(input, image, choice.Reason, outputVector)
+                                         : this->RunOnCPU(input, image, weights.ValidPixels,
+                                             !density.empty(), choice.Reason, outputVector);
   if (computed)
   {
     vtkFieldData* fields = vtkPolyData::GetData(outputVector, SitesPort)->GetFieldData();
@@ -278,6 +366,7 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
   vtkNew<vtkIntArray> remeshIds;
   remeshIds->DeepCopy(sitesOut->GetPointData()->GetArray("SiteId"));
   remeshOut->GetPointData()->AddArray(remeshIds);
+  CopySurfaceArrays(input->GetPointData(), result.Pixels, remeshOut->GetPointData());
 
   cvtvtk::FillHistoryTable(vtkTable::GetData(outputVector, HistoryPort), result.History);
   return true;
@@ -285,7 +374,7 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
 
 //------------------------------------------------------------------------------
 bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image,
-  long long valid, const std::string& reason, vtkInformationVector* outputVector)
+  long long valid, bool weighted, const std::string& reason, vtkInformationVector* outputVector)
 {
   // About 20 triangles per site: the restricted cells are exact on the triangles, which differ
   // from the surface by their chords only (torus at 1000 sites: energy on a dense image -0.29%
@@ -294,7 +383,8 @@ bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage
   const int stride = std::max(1, static_cast<int>(std::floor(std::sqrt(2.0 * valid / wanted))));
   std::vector<double> coordinates;
   std::vector<std::array<int, 3>> triangles;
-  cvt::GeometryImageMesh(image, stride, coordinates, triangles);
+  std::vector<long long> pixels;
+  cvt::GeometryImageMesh(image, stride, coordinates, triangles, &pixels);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(coordinates.size() / 3));
@@ -305,8 +395,15 @@ bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage
   vtkNew<vtkPolyData> mesh;
   mesh->SetPoints(points);
   mesh->SetPolys(cvtvtk::TriangleCells(triangles));
-
+  // The surface's arrays at the points: the remesher takes its density from them and
+  // interpolates them onto the remesh.
+  CopySurfaceArrays(input->GetPointData(), pixels, mesh->GetPointData());
   vtkNew<vtkCVTRemeshFilter> remesher;
+  if (weighted)
+  {
+    remesher->SetDensityArray(this->DensityArray.c_str());
+  }
+
   remesher->SetInputData(mesh);
   remesher->CopyOptimizerSettings(this);
   // Under MPI the ranks share its clipping of the triangles; the outputs are split below.
@@ -376,4 +473,6 @@ bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage
 void vtkCVTSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "DensityArray: " << (this->DensityArray.empty() ? "(none)" : this->DensityArray)
+     << "\n";
 }

@@ -22,7 +22,8 @@
  *    Iterations, Evaluations, StopReason;
  * 1. labels: the geometry image with an int SiteId array;
  * 2. remesh: the dual triangulation of the constrained CVT (vertices = sites), oriented like
- *    the geometry image;
+ *    the geometry image, with the image's surface arrays (a mesh's, carried by
+ *    vtkCVTMeshGeometryImage) at its vertices;
  * 3. history: vtkTable (iteration, evaluations, energy, gradient_norm, seconds).
  * Bad input gives a clear error, empty outputs and RequestData returning 0.
  */
@@ -60,6 +61,15 @@ public:
   ///@}
 
   /**
+   * A point array of the geometry image used as density (denser where larger; one component,
+   * finite, not negative, positive somewhere on the surface): it weighs each pixel's area, and
+   * on the CPU engine the triangulated image's points. vtkCVTMeshGeometryImage carries a mesh's
+   * point arrays onto its pixels. Empty (default): uniform.
+   */
+  vtkSetStdStringFromCharMacro(DensityArray);
+  vtkGetCharFromStdStringMacro(DensityArray);
+
+  /**
    * Reads a geometry image (Position required; Normal and AreaWeight computed when missing;
    * Mask optional; WrapU/WrapV field data) into the numerical core's form. Returns false with
    * a message saying what to fix.
@@ -81,7 +91,9 @@ protected:
    * vtkCVTRemeshFilter.
    */
   bool RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image, long long valid,
-    const std::string& reason, vtkInformationVector* outputVector);
+    bool weighted, const std::string& reason, vtkInformationVector* outputVector);
+
+  std::string DensityArray;
 
 private:
   vtkCVTSurfaceFilter(const vtkCVTSurfaceFilter&) = delete;

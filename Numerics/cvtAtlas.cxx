@@ -450,8 +450,8 @@ std::vector<int> Rasterize(const SurfaceMesh& mesh, const Faces& faces,
   image.AreaWeight.assign(pixels, 0.0f);
   image.Mask.assign(pixels, 0);
   atlas.Chart.assign(pixels, -1);
-  atlas.Triangle.assign(pixels, -1);
-  atlas.Barycentric.assign(3 * pixels, 0.0f);
+  atlas.Sources.Triangle.assign(pixels, -1);
+  atlas.Sources.Barycentric.assign(3 * pixels, 0.0f);
   std::vector<int> overlapping;
   for (int id = 0; id < static_cast<int>(charts.size()); ++id)
   {
@@ -490,8 +490,9 @@ std::vector<int> Rasterize(const SurfaceMesh& mesh, const Faces& faces,
             // A centre on a shared edge lies in both triangles; strictly inside two is a fold.
             overlaps = overlaps ||
               (atlas.Chart[p] == id && w[0] > 1e-6 && w[1] > 1e-6 && w[2] > 1e-6 &&
-                atlas.Barycentric[3 * p] > 1e-6 && atlas.Barycentric[3 * p + 1] > 1e-6 &&
-                atlas.Barycentric[3 * p + 2] > 1e-6);
+                atlas.Sources.Barycentric[3 * p] > 1e-6 &&
+                atlas.Sources.Barycentric[3 * p + 1] > 1e-6 &&
+                atlas.Sources.Barycentric[3 * p + 2] > 1e-6);
             continue;
           }
           const auto& tri = mesh.Triangles[t];
@@ -501,12 +502,12 @@ std::vector<int> Rasterize(const SurfaceMesh& mesh, const Faces& faces,
           {
             image.Position[3 * p + k] = static_cast<float>(point[k]);
             image.Normal[3 * p + k] = static_cast<float>(faces.Normal[t][k]);
-            atlas.Barycentric[3 * p + k] = static_cast<float>(w[k]);
+            atlas.Sources.Barycentric[3 * p + k] = static_cast<float>(w[k]);
           }
           image.AreaWeight[p] = static_cast<float>(weight);
           image.Mask[p] = 1;
           atlas.Chart[p] = id;
-          atlas.Triangle[p] = t;
+          atlas.Sources.Triangle[p] = t;
           weightSum += weight;
           drawn.push_back(p);
         }

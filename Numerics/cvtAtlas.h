@@ -32,8 +32,7 @@ struct Atlas
   /// mask and seam partners.
   GeometryImage Image;
   std::vector<int> Chart;         // per pixel: its chart, -1 outside every chart
-  std::vector<int> Triangle;      // per pixel: the mesh triangle it samples, -1 outside
-  std::vector<float> Barycentric; // per pixel: 3 weights of that triangle's points
+  PixelSources Sources;           // per pixel: the mesh triangle it samples and its weights
   std::vector<int> TriangleChart; // per mesh triangle: its chart
   int NumberOfCharts = 0;
   double MinimumAreaStretch = 0.0; // per triangle: pixel area / (3D area x pixels per unit^2)

@@ -300,8 +300,8 @@ bool ParameterizeDisk(const TriangleMesh& mesh, std::vector<double>& uv, std::st
   return true;
 }
 
-GeometryImage ResampleMesh(
-  const TriangleMesh& mesh, const std::vector<double>& uv, int width, int height)
+GeometryImage ResampleMesh(const TriangleMesh& mesh, const std::vector<double>& uv, int width,
+  int height, PixelSources* sources)
 {
   GeometryImage image;
   image.Width = width;
@@ -309,6 +309,11 @@ GeometryImage ResampleMesh(
   const size_t pixels = static_cast<size_t>(width) * height;
   image.Position.assign(3 * pixels, 0.0f);
   image.Mask.assign(pixels, 0);
+  if (sources)
+  {
+    sources->Triangle.assign(pixels, -1);
+    sources->Barycentric.assign(3 * pixels, 0.0f);
+  }
   // Bin the triangles by their (u, v) boxes on the pixel grid, then test each pixel centre.
   std::vector<std::vector<int>> bins(pixels);
   for (size_t k = 0; k < mesh.Triangles.size(); ++k)
@@ -364,6 +369,13 @@ GeometryImage ResampleMesh(
               beta * mesh.Points[3 * t[1] + d] + gamma * mesh.Points[3 * t[2] + d]);
           }
           image.Mask[p] = 1;
+          if (sources)
+          {
+            sources->Triangle[p] = k;
+            sources->Barycentric[3 * p] = static_cast<float>(alpha);
+            sources->Barycentric[3 * p + 1] = static_cast<float>(beta);
+            sources->Barycentric[3 * p + 2] = static_cast<float>(gamma);
+          }
           break;
         }
       }

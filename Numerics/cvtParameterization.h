@@ -35,9 +35,10 @@ CVTNUMERICS_EXPORT bool ParameterizeDisk(
   const TriangleMesh& mesh, std::vector<double>& uv, std::string& error);
 
 /// Samples the parameterised mesh at the pixel centres of a W x H grid: positions by
-/// barycentric interpolation, normals, area weights, mask (pixels no triangle covers).
-CVTNUMERICS_EXPORT GeometryImage ResampleMesh(
-  const TriangleMesh& mesh, const std::vector<double>& uv, int width, int height);
+/// barycentric interpolation, normals, area weights, mask (pixels no triangle covers);
+/// `sources`, when given, receives each pixel's triangle and weights.
+CVTNUMERICS_EXPORT GeometryImage ResampleMesh(const TriangleMesh& mesh,
+  const std::vector<double>& uv, int width, int height, PixelSources* sources = nullptr);
 
 /// Unit normals of a geometry image from central differences of its positions (wrap-aware).
 CVTNUMERICS_EXPORT std::vector<float> NormalsFromPositions(const GeometryImage& image);

@@ -368,7 +368,7 @@ std::vector<std::array<int, 3>> DualTriangles(
 }
 
 void GeometryImageMesh(const GeometryImage& image, int stride, std::vector<double>& points,
-  std::vector<std::array<int, 3>>& triangles)
+  std::vector<std::array<int, 3>>& triangles, std::vector<long long>* pixels)
 {
   stride = std::max(1, stride);
   // The sampled columns and rows; the last one too when the border is not identified.
@@ -391,6 +391,10 @@ void GeometryImageMesh(const GeometryImage& image, int stride, std::vector<doubl
   std::vector<int> index(static_cast<size_t>(nu) * nv, -1);
   points.clear();
   triangles.clear();
+  if (pixels)
+  {
+    pixels->clear();
+  }
   for (int b = 0; b < nv; ++b)
   {
     for (int a = 0; a < nu; ++a)
@@ -400,6 +404,10 @@ void GeometryImageMesh(const GeometryImage& image, int stride, std::vector<doubl
       {
         index[static_cast<size_t>(b) * nu + a] = static_cast<int>(points.size() / 3);
         points.insert(points.end(), &image.Position[3 * p], &image.Position[3 * p] + 3);
+        if (pixels)
+        {
+          pixels->push_back(p);
+        }
       }
     }
   }

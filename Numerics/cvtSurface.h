@@ -36,6 +36,14 @@ struct GeometryImage
   long long Neighbor(int i, int j, int di, int dj) const;
 };
 
+/// Where each pixel of a geometry image made from a mesh samples it: the mesh triangle (-1 for
+/// none) and the weights of its three points, to carry the mesh's point data onto the pixels.
+struct PixelSources
+{
+  std::vector<int> Triangle;      // per pixel
+  std::vector<float> Barycentric; // 3 per pixel
+};
+
 /// One third of the areas of the triangles of the regular triangulation incident to each pixel
 /// (each quad split along its (i, j)-(i+1, j+1) diagonal; masked pixels take no part).
 CVTNUMERICS_EXPORT std::vector<float> ComputeAreaWeights(const GeometryImage& image);
@@ -65,8 +73,10 @@ CVTNUMERICS_EXPORT std::vector<std::array<int, 3>> DualTriangles(
 /// column kept where borders are not identified), each quad split along its (i, j)-(i+1, j+1)
 /// diagonal as the image's own triangulation, identified borders joined, masked pixels left
 /// out. Points repeated by the image (a sphere's poles) are left for the caller to merge.
+/// `pixels`, when given, receives the pixel of each point.
 CVTNUMERICS_EXPORT void GeometryImageMesh(const GeometryImage& image, int stride,
-  std::vector<double>& points, std::vector<std::array<int, 3>>& triangles);
+  std::vector<double>& points, std::vector<std::array<int, 3>>& triangles,
+  std::vector<long long>* pixels = nullptr);
 
 /// The nearest site (3D distance, k-d tree, in parallel) of every valid pixel; -1 elsewhere.
 CVTNUMERICS_EXPORT std::vector<int> NearestSiteLabels(

@@ -668,3 +668,184 @@ TEST(MeshGeometryImageBadInput, AnAtlasOnTheCpuEngineSaysWhatToUseInstead)
   EXPECT_NE(catcher->Message.find("atlas"), std::string::npos) << catcher->Message;
   EXPECT_NE(catcher->Message.find("vtkCVTRemeshFilter"), std::string::npos) << catcher->Message;
 }
+
+namespace
+{
+/// A sphere mesh (the sphere source's normals dropped) with point arrays: "linear", x + 2y + 3z
+/// (which barycentric interpolation reproduces exactly), and "rho", 10 where x > 0, else 1.
+vtkSmartPointer<vtkPolyData> SphereWithArrays(double endPhi = 180.0)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.5);
+  sphere->SetThetaResolution(40);
+  sphere->SetPhiResolution(20);
+  sphere->SetEndPhi(endPhi);
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputConnection(sphere->GetOutputPort());
+  clean->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(clean->GetOutput());
+  mesh->GetPointData()->Initialize();
+  vtkNew<vtkFloatArray> linear, rho, normal;
+  linear->SetName("linear");
+  rho->SetName("rho");
+  normal->SetName("Normal"); // named like the geometry image's own: not carried
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    mesh->GetPoint(p, x);
+    linear->InsertNextValue(static_cast<float>(x[0] + 2.0 * x[1] + 3.0 * x[2]));
+    rho->InsertNextValue(x[0] > 0.0 ? 10.0f : 1.0f);
+    normal->InsertNextValue(-7.0f);
+  }
+  mesh->GetPointData()->AddArray(linear);
+  mesh->GetPointData()->AddArray(rho);
+  mesh->GetPointData()->AddArray(normal);
+  return mesh;
+}
+
+/// The sites with x > 0, of all sites.
+double ShareWherePositive(vtkPolyData* sites)
+{
+  int positive = 0;
+  for (vtkIdType i = 0; i < sites->GetNumberOfPoints(); ++i)
+  {
+    positive += sites->GetPoint(i)[0] > 0.0 ? 1 : 0;
+  }
+  return static_cast<double>(positive) / std::max<vtkIdType>(1, sites->GetNumberOfPoints());
+}
+}
+
+// Every way a mesh becomes a geometry image (a disk's map, a closed star-shaped mesh's rays, an
+// atlas) carries the mesh's point arrays onto the pixels: a linear field is reproduced exactly.
+TEST(MeshGeometryImage, PointArraysAreCarriedOntoThePixels)
+{
+  struct Case
+  {
+    const char* Name;
+    double EndPhi;
+    int Parameterization;
+  };
+  for (const Case& c : { Case{ "disk", 90.0, vtkCVTMeshGeometryImage::AUTOMATIC },
+         Case{ "star-shaped sphere", 180.0, vtkCVTMeshGeometryImage::AUTOMATIC },
+         Case{ "atlas", 180.0, vtkCVTMeshGeometryImage::ATLAS } })
+  {
+    SCOPED_TRACE(c.Name);
+    vtkNew<vtkCVTMeshGeometryImage> gi;
+    gi->SetInputData(SphereWithArrays(c.EndPhi));
+    gi->SetParameterization(c.Parameterization);
+    gi->SetResolution(96, 96);
+    gi->Update();
+    vtkPointData* pd = gi->GetOutput()->GetPointData();
+    vtkDataArray* linear = pd->GetArray("linear");
+    vtkDataArray* rho = pd->GetArray("rho");
+    ASSERT_NE(linear, nullptr);
+    ASSERT_NE(rho, nullptr);
+    vtkDataArray* position = pd->GetArray("Position");
+    vtkDataArray* mask = pd->GetArray("Mask");
+    double worst = 0.0;
+    int valid = 0, masked = 0;
+    for (vtkIdType p = 0; p < position->GetNumberOfTuples(); ++p)
+    {
+      if (mask && mask->GetTuple1(p) == 0.0)
+      {
+        masked += linear->GetTuple1(p) == 0.0 && rho->GetTuple1(p) == 0.0;
+        continue;
+      }
+      const double* x = position->GetTuple3(p);
+      worst = std::max(worst, std::abs(linear->GetTuple1(p) - (x[0] + 2.0 * x[1] + 3.0 * x[2])));
+      ++valid;
+      ASSERT_GE(rho->GetTuple1(p), 1.0 - 1e-5);
+      ASSERT_LE(rho->GetTuple1(p), 10.0 + 1e-4);
+    }
+    std::cout << "[ measured ] " << c.Name << ": " << valid
+              << " pixels, largest error of the carried linear field " << worst << "\n";
+    EXPECT_GT(valid, 1000);
+    EXPECT_LT(worst, 1e-5);
+    if (mask)
+    {
+      EXPECT_EQ(masked, position->GetNumberOfTuples() - valid); // zeros off the surface
+    }
+    // The image's own Normal is kept: unit vectors, not the mesh's array of that name.
+    ASSERT_EQ(pd->GetArray("Normal")->GetNumberOfComponents(), 3);
+  }
+}
+
+// A density carried from the mesh draws the sites where it is larger, on both engines (sites
+// per area go as the square root of the density: about 3/4 of them where it is 10 times larger).
+TEST(SurfaceFilter, DensityArrayDrawsTheSitesWhereItIsLarger)
+{
+  vtkNew<vtkCVTMeshGeometryImage> gi;
+  gi->SetInputData(SphereWithArrays());
+  gi->SetResolution(128, 64);
+  for (int engine : { vtkCVTSurfaceFilter::CPU, vtkCVTSurfaceFilter::OPENGL })
+  {
+    SCOPED_TRACE(engine == vtkCVTSurfaceFilter::CPU ? "CPU" : "OpenGL");
+    vtkNew<vtkCVTSurfaceFilter> cvt;
+    cvt->SetInputConnection(gi->GetOutputPort());
+    cvt->SetEngine(engine);
+    cvt->SetNumberOfSites(120);
+    cvt->SetMaximumNumberOfIterations(20);
+    cvt->Update();
+    const double uniform = ShareWherePositive(cvt->GetSitesOutput());
+    cvt->SetDensityArray("rho");
+    cvt->Update();
+    ASSERT_EQ(cvt->GetSitesOutput()->GetNumberOfPoints(), 120);
+    const double dense = ShareWherePositive(cvt->GetSitesOutput());
+    // The mesh's arrays reach the remesh's vertices: the linear field at their places (on the
+    // CPU interpolated on the triangulated image, on the GPU the value of the site's pixel).
+    vtkPolyData* remesh = cvt->GetRemeshOutput();
+    vtkDataArray* linear = remesh->GetPointData()->GetArray("linear");
+    ASSERT_NE(linear, nullptr);
+    ASSERT_NE(remesh->GetPointData()->GetArray("rho"), nullptr);
+    double worst = 0.0;
+    for (vtkIdType v = 0; v < remesh->GetNumberOfPoints(); ++v)
+    {
+      const double* x = remesh->GetPoint(v);
+      worst = std::max(worst, std::abs(linear->GetTuple1(v) - (x[0] + 2.0 * x[1] + 3.0 * x[2])));
+    }
+    std::cout << "[ measured ] sites where x > 0: uniform " << uniform << ", density " << dense
+              << "; the linear field at the remesh's vertices within " << worst << "\n";
+    EXPECT_NEAR(uniform, 0.5, 0.08);
+    EXPECT_GT(dense, 0.68);
+    EXPECT_LT(worst, engine == vtkCVTSurfaceFilter::CPU ? 1e-4 : 0.1);
+  }
+}
+
+TEST(SurfaceFilterBadInput, EveryBadDensitySaysWhatToFix)
+{
+  vtkNew<vtkCVTMeshGeometryImage> gi;
+  gi->SetInputData(SphereWithArrays());
+  gi->SetResolution(64, 32);
+  gi->Update();
+  const auto fail = [&gi](const char* name, float value)
+  {
+    vtkNew<vtkImageData> image;
+    image->DeepCopy(gi->GetOutput());
+    if (value != 1.0f)
+    {
+      vtkDataArray* rho = image->GetPointData()->GetArray("rho");
+      for (vtkIdType p = 0; p < rho->GetNumberOfTuples(); ++p)
+      {
+        rho->SetTuple1(p, value == 0.0f ? 0.0 : (p == 700 ? value : 1.0));
+      }
+    }
+    vtkNew<vtkCVTSurfaceFilter> cvt;
+    vtkNew<ErrorCatcher> catcher;
+    cvt->AddObserver(vtkCommand::ErrorEvent, catcher);
+    cvt->SetInputData(image);
+    cvt->SetNumberOfSites(10);
+    cvt->SetEngine(vtkCVTSurfaceFilter::CPU);
+    cvt->SetDensityArray(name);
+    cvt->Update();
+    EXPECT_EQ(cvt->GetSitesOutput()->GetNumberOfPoints(), 0);
+    EXPECT_EQ(cvt->GetRemeshOutput()->GetNumberOfCells(), 0);
+    return catcher->Message;
+  };
+  EXPECT_NE(
+    fail("nothing", 1.0f).find("no one-component point array 'nothing'"), std::string::npos);
+  EXPECT_NE(fail("Position", 1.0f).find("no one-component"), std::string::npos);
+  EXPECT_NE(fail("rho", std::numeric_limits<float>::quiet_NaN()).find("NaN"), std::string::npos);
+  EXPECT_NE(fail("rho", -2.0f).find("negative"), std::string::npos);
+  EXPECT_NE(fail("rho", 0.0f).find("zero everywhere"), std::string::npos);
+}

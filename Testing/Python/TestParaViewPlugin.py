@@ -124,6 +124,21 @@ def main(plugin, data_dir, output_dir):
     mesh_cvt = CVTSurface(Input=mesh_image, NumberOfSites=100, MaximumNumberOfIterations=10)
     mesh_cvt.UpdatePipeline()
     check(mesh_cvt.GetDataInformation(2).GetNumberOfPoints() == 100, "mesh remesh has 100 vertices")
+    # A mesh's point array, carried onto the pixels, is a density the surface proxy offers.
+    from paraview.simple import Calculator
+    weighted = Calculator(Input=mesh, ResultArrayName="rho", Function="1 + 9 * (coordsX > 0)")
+    weighted_image = CVTMeshGeometryImage(Input=weighted, Resolution=[128, 128])
+    weighted_image.UpdatePipeline()
+    weighted_cvt = CVTSurface(Input=weighted_image, NumberOfSites=100, MaximumNumberOfIterations=10)
+    check(weighted_cvt.Density == "Uniform density", "surface: uniform density by default")
+    check("rho" in weighted_cvt.GetProperty("DensityArray").Available,
+          "surface: the mesh's array is offered as density")
+    weighted_cvt.Density = "rho"
+    weighted_cvt.UpdatePipeline()
+    dense_sites = servermanager.Fetch(weighted_cvt, idx=0)
+    positive = sum(1 for i in range(dense_sites.GetNumberOfPoints())
+                   if dense_sites.GetPoint(i)[0] > 0)
+    check(positive > 60, "surface density draws the sites where it is larger (%d of 100)" % positive)
 
     # File > Open of an OFF mesh picks the plugin's reader; its octahedron remeshes closed.
     from paraview.simple import OpenDataFile
