@@ -148,6 +148,131 @@ vtkImageData* vtkCVTSceneRenderer::KeepPicture(vtkUnsignedCharArray* pixels, int
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// Points a camera at a mesh of these bounds, any shape and size: mostly along the box's
+/// thinnest axis (the largest face in view), tilted so relief shows, the longest axis across
+/// the (landscape) picture; the distance fits the box's bounding sphere in the view angle, as
+/// vtkRenderer::ResetCamera does. `direction` receives the unit vector towards the camera.
+void FitCamera(const double bounds[6], vtkCamera* camera, double direction[3])
+{
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  int axes[3] = { 0, 1, 2 }; // thinnest, middle, longest
+  std::sort(axes, axes + 3,
+    [&bounds](int a, int b)
+    { return bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * b + 1] - bounds[2 * b]; });
+  double up[3] = { 0.0, 0.0, 0.0 };
+  std::fill(direction, direction + 3, 0.0);
+  direction[axes[0]] = 1.0;
+  direction[axes[1]] = -0.6;
+  up[axes[1]] = 1.0;
+  vtkMath::Normalize(direction);
+  double radius = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    radius += 0.25 * (bounds[2 * k + 1] - bounds[2 * k]) * (bounds[2 * k + 1] - bounds[2 * k]);
+  }
+  radius = std::max(std::sqrt(radius), 1e-12);
+  const double distance =
+    radius / std::sin(0.5 * vtkMath::RadiansFromDegrees(camera->GetViewAngle()));
+  camera->SetFocalPoint(center);
+  camera->SetPosition(center[0] + distance * direction[0], center[1] + distance * direction[1],
+    center[2] + distance * direction[2]);
+  camera->SetViewUp(up);
+  camera->OrthogonalizeViewUp();
+  camera->SetClippingRange(
+    std::max(1e-3 * distance, distance - 1.01 * radius), distance + 1.01 * radius);
+  camera->Zoom(1.3);
+}
+
+/// A z-buffered RGB picture of flat triangles with dark edges, drawn on the CPU.
+class TriangleRaster
+{
+public:
+  using Corner = std::array<double, 3>; // picture x, y (pixels) and depth (smaller is nearer)
+
+  TriangleRaster(int width, int height, unsigned char* rgb)
+    : Width(width)
+    , Height(height)
+    , RGB(rgb)
+    , Depth(static_cast<size_t>(width) * height, 2.0)
+  {
+    std::fill(rgb, rgb + 3 * static_cast<size_t>(width) * height, 255);
+  }
+
+  /// Draws triangle a, b, c in `colour` where it is nearest; pixels within EdgeHalfWidth of an
+  /// edge that `outline` flags (edge i is opposite corner i) take the edge colour instead, so
+  /// each side of an edge draws half the line and hidden edges stay hidden.
+  void Fill(const Corner& a, const Corner& b, const Corner& c, const bool outline[3],
+    const unsigned char colour[3])
+  {
+    const double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    if (area == 0.0)
+    {
+      return;
+    }
+    const Corner* corners[3] = { &a, &b, &c };
+    double edgeLength[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      const Corner& p = *corners[(i + 1) % 3];
+      const Corner& q = *corners[(i + 2) % 3];
+      edgeLength[i] = std::hypot(q[0] - p[0], q[1] - p[1]);
+    }
+    const int xFirst = std::max(0, static_cast<int>(std::floor(std::min({ a[0], b[0], c[0] }))));
+    const int xLast =
+      std::min(this->Width - 1, static_cast<int>(std::ceil(std::max({ a[0], b[0], c[0] }))));
+    const int yFirst = std::max(0, static_cast<int>(std::floor(std::min({ a[1], b[1], c[1] }))));
+    const int yLast =
+      std::min(this->Height - 1, static_cast<int>(std::ceil(std::max({ a[1], b[1], c[1] }))));
+    for (int py = yFirst; py <= yLast; ++py)
+    {
+      for (int px = xFirst; px <= xLast; ++px)
+      {
+        // Barycentric weights of the pixel centre: edge i's function over the area, positive
+        // inside; times |area| it is the distance to the edge times the edge's length.
+        const double sx = px + 0.5, sy = py + 0.5;
+        double lambda[3];
+        bool inside = true;
+        for (int i = 0; i < 3; ++i)
+        {
+          const Corner& p = *corners[(i + 1) % 3];
+          const Corner& q = *corners[(i + 2) % 3];
+          lambda[i] = ((q[0] - p[0]) * (sy - p[1]) - (q[1] - p[1]) * (sx - p[0])) / area;
+          inside = inside && lambda[i] >= 0.0;
+        }
+        const size_t pixel = px + static_cast<size_t>(py) * this->Width;
+        const double z = lambda[0] * a[2] + lambda[1] * b[2] + lambda[2] * c[2];
+        if (!inside || z >= this->Depth[pixel] || z < -1.0)
+        {
+          continue;
+        }
+        this->Depth[pixel] = z;
+        bool onEdge = false;
+        for (int i = 0; i < 3; ++i)
+        {
+          onEdge =
+            onEdge || (outline[i] && lambda[i] * std::abs(area) < EdgeHalfWidth * edgeLength[i]);
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          this->RGB[3 * pixel + k] = onEdge ? EdgeColour : colour[k];
+        }
+      }
+    }
+  }
+
+private:
+  static constexpr double EdgeHalfWidth = 0.7; // pixels
+  static constexpr unsigned char EdgeColour = 25;
+  int Width, Height;
+  unsigned char* RGB;
+  std::vector<double> Depth;
+};
+}
+
+//------------------------------------------------------------------------------
 vtkImageData* vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
 {
   this->LastError.clear();
@@ -158,48 +283,14 @@ vtkImageData* vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
     return nullptr;
   }
   const int width = this->Size, height = (this->Size * 3) / 4;
-
-  // Any surface, any size: look mostly along the box's thinnest axis (the largest face in
-  // view), tilted so relief shows, with the longest axis across the (landscape) picture; the
-  // distance fits the box's bounding sphere in the view angle, as vtkRenderer::ResetCamera.
-  double bounds[6];
+  double bounds[6], direction[3];
   mesh->GetBounds(bounds);
-  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]) };
-  int axes[3] = { 0, 1, 2 }; // thinnest, middle, longest
-  std::sort(axes, axes + 3,
-    [&bounds](int a, int b)
-    { return bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * b + 1] - bounds[2 * b]; });
-  double direction[3] = { 0.0, 0.0, 0.0 }, up[3] = { 0.0, 0.0, 0.0 };
-  direction[axes[0]] = 1.0;
-  direction[axes[1]] = -0.6;
-  up[axes[1]] = 1.0;
-  const double length = std::sqrt(
-    direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
-  double radius = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    direction[k] /= length;
-    radius += 0.25 * (bounds[2 * k + 1] - bounds[2 * k]) * (bounds[2 * k + 1] - bounds[2 * k]);
-  }
-  radius = std::max(std::sqrt(radius), 1e-12);
   vtkNew<vtkCamera> camera;
-  const double viewAngle = camera->GetViewAngle();
-  const double distance = radius / std::sin(0.5 * vtkMath::RadiansFromDegrees(viewAngle));
-  camera->SetFocalPoint(center);
-  camera->SetPosition(center[0] + distance * direction[0], center[1] + distance * direction[1],
-    center[2] + distance * direction[2]);
-  camera->SetViewUp(up);
-  camera->OrthogonalizeViewUp();
-  camera->SetClippingRange(
-    std::max(1e-3 * distance, distance - 1.01 * radius), distance + 1.01 * radius);
-  camera->Zoom(1.3);
+  FitCamera(bounds, camera, direction);
   vtkMatrix4x4* toView =
     camera->GetCompositeProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0);
-
-  // Each point in picture pixels (x, y) and depth (z, smaller is nearer).
   const vtkIdType pointCount = mesh->GetNumberOfPoints();
-  std::vector<std::array<double, 3>> screen(pointCount);
+  std::vector<TriangleRaster::Corner> screen(pointCount);
   std::vector<char> inFront(pointCount);
   for (vtkIdType p = 0; p < pointCount; ++p)
   {
@@ -214,26 +305,22 @@ vtkImageData* vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
     }
   }
 
-  // Drawn on the CPU, not rendered: a z-buffer of flat triangles, each in its own pastel colour
-  // (fixed seed) lit by a light at the camera (both sides), with its edges drawn dark. It needs
-  // no OpenGL, costs milliseconds instead of a context and a shader compile (0.3 s on
-  // llvmpipe), and gives the same picture on every machine.
+  // Drawn on the CPU, not rendered: each triangle in its own pastel colour (fixed seed), lit by
+  // a light at the camera (both sides), its edges dark. It needs no OpenGL, costs milliseconds
+  // instead of a context and a shader compile (0.3 s on llvmpipe), and gives the same picture
+  // on every machine.
   vtkNew<vtkUnsignedCharArray> pixels;
   pixels->SetNumberOfComponents(3);
   pixels->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
-  unsigned char* rgb = pixels->GetPointer(0);
-  std::fill(rgb, rgb + 3 * static_cast<size_t>(width) * height, 255);
-  std::vector<double> depth(static_cast<size_t>(width) * height, 2.0);
-  const double edgeHalfWidth = 0.7; // pixels; each side of an edge draws its half
-  const unsigned char edgeColour = 25;
+  TriangleRaster raster(width, height, pixels->GetPointer(0));
   std::mt19937 rng(12345);
   vtkCellArray* polys = mesh->GetPolys();
   vtkIdType cellSize = 0;
   const vtkIdType* cell = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(cellSize, cell);)
   {
-    std::array<double, 3> colour;
-    for (double& channel : colour)
+    double pastel[3];
+    for (double& channel : pastel)
     {
       channel = 90 + rng() % 150;
     }
@@ -241,17 +328,16 @@ vtkImageData* vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
     {
       // A polygon is drawn as a fan; only its outline is an edge.
       const vtkIdType ids[3] = { cell[0], cell[corner], cell[corner + 1] };
-      const bool outline[3] = { corner == 1, true, corner + 2 == cellSize };
+      const bool outline[3] = { true, corner + 2 == cellSize, corner == 1 };
       if (!inFront[ids[0]] || !inFront[ids[1]] || !inFront[ids[2]])
       {
         continue;
       }
-      double x[3][3];
+      double x[3][3], e1[3], e2[3], normal[3];
       for (int v = 0; v < 3; ++v)
       {
         mesh->GetPoint(ids[v], x[v]);
       }
-      double e1[3], e2[3], normal[3];
       for (int k = 0; k < 3; ++k)
       {
         e1[k] = x[1][k] - x[0][k];
@@ -260,69 +346,12 @@ vtkImageData* vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
       vtkMath::Cross(e1, e2, normal);
       const double norm = vtkMath::Norm(normal);
       const double light = norm > 0.0 ? std::abs(vtkMath::Dot(normal, direction)) / norm : 0.0;
-      const double shade = 0.25 + 0.75 * light;
-      const auto& a = screen[ids[0]];
-      const auto& b = screen[ids[1]];
-      const auto& c = screen[ids[2]];
-      const double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-      if (area == 0.0)
+      unsigned char colour[3];
+      for (int k = 0; k < 3; ++k)
       {
-        continue;
+        colour[k] = static_cast<unsigned char>(std::lround((0.25 + 0.75 * light) * pastel[k]));
       }
-      // Edge i is opposite corner i; its function is the signed distance in pixels times its
-      // length, positive inside.
-      const std::array<double, 3>* corners[3] = { &a, &b, &c };
-      double edgeLength[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        const auto& p = *corners[(i + 1) % 3];
-        const auto& q = *corners[(i + 2) % 3];
-        edgeLength[i] = std::hypot(q[0] - p[0], q[1] - p[1]);
-      }
-      const int xFirst = std::max(0, static_cast<int>(std::floor(std::min({ a[0], b[0], c[0] }))));
-      const int xLast =
-        std::min(width - 1, static_cast<int>(std::ceil(std::max({ a[0], b[0], c[0] }))));
-      const int yFirst = std::max(0, static_cast<int>(std::floor(std::min({ a[1], b[1], c[1] }))));
-      const int yLast =
-        std::min(height - 1, static_cast<int>(std::ceil(std::max({ a[1], b[1], c[1] }))));
-      for (int py = yFirst; py <= yLast; ++py)
-      {
-        for (int px = xFirst; px <= xLast; ++px)
-        {
-          const double sx = px + 0.5, sy = py + 0.5;
-          double lambda[3];
-          bool inside = true;
-          for (int i = 0; i < 3; ++i)
-          {
-            const auto& p = *corners[(i + 1) % 3];
-            const auto& q = *corners[(i + 2) % 3];
-            lambda[i] = ((q[0] - p[0]) * (sy - p[1]) - (q[1] - p[1]) * (sx - p[0])) / area;
-            inside = inside && lambda[i] >= 0.0;
-          }
-          if (!inside)
-          {
-            continue;
-          }
-          const size_t pixel = px + static_cast<size_t>(py) * width;
-          const double z = lambda[0] * a[2] + lambda[1] * b[2] + lambda[2] * c[2];
-          if (z >= depth[pixel] || z < -1.0)
-          {
-            continue;
-          }
-          depth[pixel] = z;
-          bool onEdge = false;
-          for (int i = 0; i < 3; ++i)
-          {
-            onEdge = onEdge ||
-              (outline[(i + 1) % 3] && lambda[i] * std::abs(area) < edgeHalfWidth * edgeLength[i]);
-          }
-          for (int k = 0; k < 3; ++k)
-          {
-            rgb[3 * pixel + k] =
-              onEdge ? edgeColour : static_cast<unsigned char>(std::lround(shade * colour[k]));
-          }
-        }
-      }
+      raster.Fill(screen[ids[0]], screen[ids[1]], screen[ids[2]], outline, colour);
     }
   }
   return this->KeepPicture(pixels, width, height);
