@@ -53,12 +53,19 @@ void CarryPointData(vtkPolyData* mesh, const std::vector<std::array<int, 3>>& tr
       carried->NullData(p);
       continue;
     }
-    double weights[3];
+    // Weights a rounding below 0 (a pixel on an edge) are clamped, so that values stay within
+    // their corners' (a density of 0 and 1 never becomes -1e-9).
+    double weights[3], sum = 0.0;
     for (int k = 0; k < 3; ++k)
     {
       const int point = triangles[t][k];
       corners->SetId(k, inputPoint.empty() ? point : inputPoint[point]);
-      weights[k] = sources.Barycentric[3 * p + k];
+      weights[k] = std::max(0.0, static_cast<double>(sources.Barycentric[3 * p + k]));
+      sum += weights[k];
+    }
+    for (double& w : weights)
+    {
+      w = sum > 0.0 ? w / sum : 1.0 / 3.0;
     }
     carried->InterpolatePoint(in, p, corners, weights);
   }

@@ -672,7 +672,8 @@ TEST(MeshGeometryImageBadInput, AnAtlasOnTheCpuEngineSaysWhatToUseInstead)
 namespace
 {
 /// A sphere mesh (the sphere source's normals dropped) with point arrays: "linear", x + 2y + 3z
-/// (which barycentric interpolation reproduces exactly), and "rho", 10 where x > 0, else 1.
+/// (which barycentric interpolation reproduces exactly), "rho", 10 where x > 0, else 1, and
+/// "step", 1 where x > 0, else 0.
 vtkSmartPointer<vtkPolyData> SphereWithArrays(double endPhi = 180.0)
 {
   vtkNew<vtkSphereSource> sphere;
@@ -686,9 +687,10 @@ vtkSmartPointer<vtkPolyData> SphereWithArrays(double endPhi = 180.0)
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(clean->GetOutput());
   mesh->GetPointData()->Initialize();
-  vtkNew<vtkFloatArray> linear, rho, normal;
+  vtkNew<vtkFloatArray> linear, rho, step, normal;
   linear->SetName("linear");
   rho->SetName("rho");
+  step->SetName("step");
   normal->SetName("Normal"); // named like the geometry image's own: not carried
   for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
   {
@@ -696,10 +698,12 @@ vtkSmartPointer<vtkPolyData> SphereWithArrays(double endPhi = 180.0)
     mesh->GetPoint(p, x);
     linear->InsertNextValue(static_cast<float>(x[0] + 2.0 * x[1] + 3.0 * x[2]));
     rho->InsertNextValue(x[0] > 0.0 ? 10.0f : 1.0f);
+    step->InsertNextValue(x[0] > 0.0 ? 1.0f : 0.0f);
     normal->InsertNextValue(-7.0f);
   }
   mesh->GetPointData()->AddArray(linear);
   mesh->GetPointData()->AddArray(rho);
+  mesh->GetPointData()->AddArray(step);
   mesh->GetPointData()->AddArray(normal);
   return mesh;
 }
@@ -739,8 +743,10 @@ TEST(MeshGeometryImage, PointArraysAreCarriedOntoThePixels)
     vtkPointData* pd = gi->GetOutput()->GetPointData();
     vtkDataArray* linear = pd->GetArray("linear");
     vtkDataArray* rho = pd->GetArray("rho");
+    vtkDataArray* step = pd->GetArray("step");
     ASSERT_NE(linear, nullptr);
     ASSERT_NE(rho, nullptr);
+    ASSERT_NE(step, nullptr);
     vtkDataArray* position = pd->GetArray("Position");
     vtkDataArray* mask = pd->GetArray("Mask");
     double worst = 0.0;
@@ -757,6 +763,8 @@ TEST(MeshGeometryImage, PointArraysAreCarriedOntoThePixels)
       ++valid;
       ASSERT_GE(rho->GetTuple1(p), 1.0 - 1e-5);
       ASSERT_LE(rho->GetTuple1(p), 10.0 + 1e-4);
+      // Within the corners' values: a density of 0 and 1 never becomes slightly negative.
+      ASSERT_GE(step->GetTuple1(p), 0.0) << "pixel " << p;
     }
     std::cout << "[ measured ] " << c.Name << ": " << valid
               << " pixels, largest error of the carried linear field " << worst << "\n";
