@@ -3,6 +3,7 @@
 #include "cvtParameterization.h"
 #include "cvtProblems.h"
 #include "cvtQuality.h"
+#include "cvtSampling.h"
 #include "cvtSurface.h"
 #include "vtkCVTEngineChoice.h"
 #include "vtkCVTOutputHelpers.h"
@@ -107,10 +108,11 @@ void CopySurfaceArrays(
   }
 }
 
-/// The density array `name` of the geometry image at every pixel: one component, finite and
-/// not negative, positive somewhere on the surface; else false with what to fix.
-bool ReadDensity(vtkImageData* input, const std::string& name, const cvt::GeometryImage& image,
-  std::vector<float>& density, std::string& error)
+/// Weighs each pixel's area by the density array `name` of the geometry image (one component;
+/// cvt::CheckDensity's rules on the surface's pixels: finite, not negative, not all zero), so
+/// that a pixel's mass is its area times the density there; else false with what to fix.
+bool WeighByDensity(
+  vtkImageData* input, const std::string& name, cvt::GeometryImage& image, std::string& error)
 {
   vtkDataArray* array = input->GetPointData()->GetArray(name.c_str());
   if (!array || array->GetNumberOfComponents() != 1)
@@ -120,29 +122,23 @@ bool ReadDensity(vtkImageData* input, const std::string& name, const cvt::Geomet
       "leave DensityArray empty.";
     return false;
   }
-  density.assign(static_cast<size_t>(image.NumberOfPixels()), 0.0f);
-  double largest = 0.0;
+  std::vector<float> density(static_cast<size_t>(image.NumberOfPixels()), 0.0f);
   for (long long p = 0; p < image.NumberOfPixels(); ++p)
   {
-    if (!image.IsValid(p))
-    {
-      continue;
-    }
-    const double value = array->GetComponent(p, 0);
-    if (!std::isfinite(value) || value < 0.0)
-    {
-      error = "The density array '" + name + "' has " +
-        (std::isfinite(value) ? "negative" : "NaN or infinite") +
-        " values on the surface; give finite values of 0 or more.";
-      return false;
-    }
-    density[p] = static_cast<float>(value);
-    largest = std::max(largest, value);
+    density[p] = image.IsValid(p) ? static_cast<float>(array->GetComponent(p, 0)) : 0.0f;
   }
-  if (largest <= 0.0)
+  cvt::Grid pixels;
+  pixels.Width = image.Width;
+  pixels.Height = image.Height;
+  const std::string problem = cvt::CheckDensity(pixels, density);
+  if (!problem.empty())
   {
-    error = "The density array '" + name + "' is zero everywhere on the surface.";
+    error = "The density array '" + name + "' on the surface: " + problem + ".";
     return false;
+  }
+  for (long long p = 0; p < image.NumberOfPixels(); ++p)
+  {
+    image.AreaWeight[p] *= density[p];
   }
   return true;
 }
@@ -255,19 +251,12 @@ bool vtkCVTSurfaceFilter::Compute(
     return false;
   }
   const AreaWeights weights = MeasureAreaWeights(image);
-  std::vector<float> density;
-  if (!this->DensityArray.empty() && this->DensityArray != UniformDensityName())
+  // The measures above stay areas; the weights become masses.
+  const bool weighted = !this->DensityArray.empty() && this->DensityArray != UniformDensityName();
+  if (weighted && !WeighByDensity(input, this->DensityArray, image, error))
   {
-    if (!ReadDensity(input, this->DensityArray, image, density, error))
-    {
-      vtkErrorMacro("" << error);
-      return false;
-    }
-    // A pixel's mass is its area times the density there (the measures above stay areas).
-    for (long long p = 0; p < image.NumberOfPixels(); ++p)
-    {
-      image.AreaWeight[p] *= density[p];
-    }
+    vtkErrorMacro("" << error);
+    return false;
   }
   // A cell should cover a good many pixels, even where pixels are largest.
   const double cellArea = weights.Total / this->NumberOfSites;
@@ -294,9 +283,9 @@ bool vtkCVTSurfaceFilter::Compute(
          "(vtkCVTRemeshFilter), exact on the CPU.");
     return false;
   }
-  const bool computed = choice.UseOpenGL ? this->RunOnGPU(input, image, choice.Reason, outputVector)
-                                         : this->RunOnCPU(input, image, weights.ValidPixels,
-                                             !density.empty(), choice.Reason, outputVector);
+  const bool computed = choice.UseOpenGL
+    ? this->RunOnGPU(input, image, choice.Reason, outputVector)
+    : this->RunOnCPU(input, image, weights.ValidPixels, weighted, choice.Reason, outputVector);
   if (computed)
   {
     vtkFieldData* fields = vtkPolyData::GetData(outputVector, SitesPort)->GetFieldData();
