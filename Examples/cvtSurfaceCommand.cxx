@@ -88,6 +88,13 @@ std::string AtlasReport(vtkDataObject* image)
   return text.str();
 }
 
+/// The stages' clock, and the seconds since `from` (--report's per-stage times).
+using Clock = std::chrono::steady_clock;
+double SecondsSince(Clock::time_point from)
+{
+  return std::chrono::duration<double>(Clock::now() - from).count();
+}
+
 /// "N parts, genus G, L boundary loops" from the field data named with `prefix`.
 std::string TopologyText(vtkDataObject* data, const std::string& prefix)
 {
@@ -101,9 +108,6 @@ std::string TopologyText(vtkDataObject* data, const std::string& prefix)
 /// cvt surface --input MESH on the CPU engine: restricted Voronoi cells on the mesh itself.
 int RunRemesh(const Options& options)
 {
-  using Clock = std::chrono::steady_clock;
-  const auto seconds = [](Clock::time_point from)
-  { return std::chrono::duration<double>(Clock::now() - from).count(); };
   const Clock::time_point start = Clock::now();
   OutputFolder(options); // before any work: a folder that cannot be written fails now
   vtkSmartPointer<vtkAlgorithm> reader = MeshReader(options);
@@ -114,7 +118,7 @@ int RunRemesh(const Options& options)
   {
     Fail("cannot read --input '" + options.Input + "': " + readErrors->Message);
   }
-  const double readSeconds = seconds(start);
+  const double readSeconds = SecondsSince(start);
   vtkNew<vtkCVTRemeshFilter> cvt;
   cvt->SetInputConnection(reader->GetOutputPort());
   cvt->SetDensityArray(options.Array.c_str());
@@ -122,7 +126,7 @@ int RunRemesh(const Options& options)
   const Clock::time_point optimise = Clock::now();
   RunOrFail(
     cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetSitesOutput(); });
-  const double cvtSeconds = seconds(optimise);
+  const double cvtSeconds = SecondsSince(optimise);
 
   const Clock::time_point write = Clock::now();
   OutputFiles files(OutputFolder(options));
@@ -132,7 +136,7 @@ int RunRemesh(const Options& options)
   Write<vtkXMLPolyDataWriter>(cvt->GetLabelsOutput(), files, "labels.vtp");
   Write<vtkXMLPolyDataWriter>(remesh, files, "remesh.vtp");
   WriteCsv(sites, cvt->GetHistoryOutput(), 3, files);
-  const double writeSeconds = seconds(write);
+  const double writeSeconds = SecondsSince(write);
   vtkNew<vtkCVTSceneRenderer> scene;
   const bool pictureWritten = WritePicture(scene->RenderMesh(remesh), scene->GetLastError(), files);
   files.Commit();
@@ -189,9 +193,6 @@ int RunSurface(const Options& options)
   {
     return RunRemesh(options);
   }
-  using Clock = std::chrono::steady_clock;
-  const auto seconds = [](Clock::time_point from)
-  { return std::chrono::duration<double>(Clock::now() - from).count(); };
   const Clock::time_point start = Clock::now();
   OutputFolder(options); // before any work: a folder that cannot be written fails now
   vtkSmartPointer<vtkAlgorithm> geometryImage = SurfaceGeometryImage(options);
@@ -202,7 +203,7 @@ int RunSurface(const Options& options)
   {
     Fail(meshErrors->Message);
   }
-  const double atlasSeconds = seconds(start);
+  const double atlasSeconds = SecondsSince(start);
   vtkNew<vtkCVTSurfaceFilter> cvt;
   cvt->SetInputConnection(geometryImage->GetOutputPort());
   cvt->SetDensityArray(options.Array.c_str()); // the mesh's array, carried onto the pixels
@@ -211,7 +212,7 @@ int RunSurface(const Options& options)
   Clock::time_point stage = Clock::now();
   RunOrFail(
     cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTSurfaceFilter*>(f)->GetSitesOutput(); });
-  const double optimiseSeconds = seconds(stage);
+  const double optimiseSeconds = SecondsSince(stage);
 
   OutputFiles files(OutputFolder(options));
   vtkPolyData* sites = cvt->GetSitesOutput();
@@ -231,7 +232,7 @@ int RunSurface(const Options& options)
       [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetRemeshOutput(); });
     remesh = exact->GetRemeshOutput();
   }
-  const double remeshSeconds = seconds(stage);
+  const double remeshSeconds = SecondsSince(stage);
   Write<vtkXMLPolyDataWriter>(sites, files, "sites.vtp");
   Write<vtkXMLImageDataWriter>(cvt->GetLabelsOutput(), files, "labels.vti");
   Write<vtkXMLPolyDataWriter>(remesh, files, "remesh.vtp");
@@ -257,7 +258,7 @@ int RunSurface(const Options& options)
     {
       std::cout << "  input topology              " << TopologyText(remesh, "Input") << "\n"
                 << "  remesh topology             " << TopologyText(remesh, "") << "\n"
-                << "  remesh made as               the restricted Delaunay triangulation of the "
+                << "  remesh made as              the restricted Delaunay triangulation of the "
                    "sites on the mesh ("
                 << Field(exact->GetSitesOutput(), "AddedSites") << " sites added for topology)\n";
     }
