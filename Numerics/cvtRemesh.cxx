@@ -101,6 +101,7 @@ struct EdgeFlip
   int A, B, C, D;
   double SmallestBefore; // the pair's smallest angle (radians) now
   double SmallestAfter;  // and once flipped
+  double Flatness;       // cosine of the largest angle between the normals, old pair and new
 };
 
 /// Flips shared edges of two triangles within `flatDegrees` of coplanar wherever `accept(flip,
@@ -177,14 +178,15 @@ int FlipEdges(const std::vector<double>& points, const std::vector<char>& pinned
         const std::array<int, 3> new1 = { a, d, c }, new2 = { d, b, c };
         UnitNormal(point(a), point(d), point(c), m1);
         UnitNormal(point(d), point(b), point(c), m2);
-        if (Dot(n1, n2) < flatEnough || Dot(m1, n1) < flatEnough || Dot(m2, n2) < flatEnough ||
-          Dot(m1, m2) < flatEnough)
+        const double flatness =
+          std::min(std::min(Dot(n1, n2), Dot(m1, n1)), std::min(Dot(m2, n2), Dot(m1, m2)));
+        if (flatness < flatEnough)
         {
           continue;
         }
         const EdgeFlip flip = { a, b, c, d,
           std::min(smallestAngle(triangles[t1]), smallestAngle(other)),
-          std::min(smallestAngle(new1), smallestAngle(new2)) };
+          std::min(smallestAngle(new1), smallestAngle(new2)), flatness };
         if (!accept(flip, valence, onBorder))
         {
           continue;
@@ -217,32 +219,6 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
   return FlipEdges(points, pinned, triangles, 15.0,
     [below](const EdgeFlip& flip, const std::vector<int>&, const std::vector<char>&)
     { return flip.SmallestBefore < below && flip.SmallestAfter > flip.SmallestBefore + 1e-9; });
-}
-
-/// Flips (within 30 degrees of coplanar) that bring the four vertices' valences closer to 6
-/// (4 on a border), as isotropic remeshers do, where the pair keeps every angle above 30
-/// degrees or gets no thinner: cells of a CVT that is not yet fully converged, and cells near
-/// creases and on thin parts, leave pairs of valence 5 and 7 vertices whose other diagonal is
-/// as good a triangle. (Thin parts bend by 20 to 30 degrees from one triangle to the next at
-/// 1000 sites: a 10-degree bound kept half of these flips from camel's legs and spider's.)
-int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<char>& pinned,
-  std::vector<std::array<int, 3>>& triangles)
-{
-  return FlipEdges(points, pinned, triangles, 30.0,
-    [&](const EdgeFlip& f, const std::vector<int>& valence, const std::vector<char>& onBorder)
-    {
-      const auto deviation = [&onBorder](int v, int edges)
-      {
-        const int d = edges - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
-        return d * d;
-      };
-      const auto of = [&valence](int v) { return valence[static_cast<size_t>(v)]; };
-      const int before = deviation(f.A, of(f.A)) + deviation(f.B, of(f.B)) +
-        deviation(f.C, of(f.C)) + deviation(f.D, of(f.D));
-      const int after = deviation(f.A, of(f.A) - 1) + deviation(f.B, of(f.B) - 1) +
-        deviation(f.C, of(f.C) + 1) + deviation(f.D, of(f.D) + 1);
-      return after < before && f.SmallestAfter >= std::min(f.SmallestBefore, ThinCorner);
-    });
 }
 
 /// The nearest point of the input surface to a point, for vertices that move along it: the
@@ -287,6 +263,13 @@ public:
     return best;
   }
 
+  /// How far `p` is from the surface (0 when it has no triangle near).
+  double DistanceTo(const double p[3]) const
+  {
+    double q[3], w[3];
+    return this->Nearest(p, q, w) >= 0 ? std::sqrt(Distance2(q, p)) : 0.0;
+  }
+
   /// How far the farthest centroid of `triangles` (three points each) is from the surface: a
   /// change of the remesh must not cut across a crease (the input would then lie far from it).
   double FarthestCentroid(const std::vector<std::array<const double*, 3>>& triangles) const
@@ -294,15 +277,12 @@ public:
     double farthest = 0.0;
     for (const auto& t : triangles)
     {
-      double c[3], q[3], w[3];
+      double c[3];
       for (int k = 0; k < 3; ++k)
       {
         c[k] = (t[0][k] + t[1][k] + t[2][k]) / 3.0;
       }
-      if (this->Nearest(c, q, w) >= 0)
-      {
-        farthest = std::max(farthest, std::sqrt(Distance2(q, c)));
-      }
+      farthest = std::max(farthest, this->DistanceTo(c));
     }
     return farthest;
   }
@@ -329,6 +309,57 @@ private:
   PointCloud<3> Cloud{ &Centroids };
   PointTree<3> Tree;
 };
+
+/// How far a pair of triangles on `diagonal` (a, b) with the other corners c and d lies from
+/// the surface: its farthest centroid or the diagonal's midpoint.
+double PairDistance(const SurfaceProjector& surface, const double* a, const double* b,
+  const double* c, const double* d)
+{
+  double middle[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    middle[k] = 0.5 * (a[k] + b[k]);
+  }
+  return std::max(
+    surface.FarthestCentroid({ { a, b, c }, { b, a, d } }), surface.DistanceTo(middle));
+}
+
+/// Flips that bring the four vertices' valences closer to 6 (4 on a border), as isotropic
+/// remeshers do, where the pair keeps every angle above 30 degrees or gets no thinner: cells of
+/// a CVT that is not yet fully converged, and cells near creases and on thin parts, leave pairs
+/// of valence 5 and 7 vertices whose other diagonal is as good a triangle. Pairs within 30
+/// degrees of coplanar flip on that alone; given the input `surface`, pairs bent by up to 90
+/// degrees flip where the new pair lies no farther from it than the old. (Thin parts bend by 20
+/// to 30 degrees from one triangle to the next at 1000 sites, and by more where sites were added
+/// round them: a 10-degree bound kept half of the flips from camel's legs and spider's, and the
+/// 30-degree one most of those round the sites added on armadillo's and camel's thin parts.)
+int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<char>& pinned,
+  std::vector<std::array<int, 3>>& triangles, const SurfaceProjector* surface = nullptr)
+{
+  const double flatEnough = std::cos(30.0 * 3.14159265358979323846 / 180.0);
+  const auto point = [&points](int v) { return &points[3 * static_cast<size_t>(v)]; };
+  return FlipEdges(points, pinned, triangles, surface ? 90.0 : 30.0,
+    [&](const EdgeFlip& f, const std::vector<int>& valence, const std::vector<char>& onBorder)
+    {
+      const auto deviation = [&onBorder](int v, int edges)
+      {
+        const int d = edges - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
+        return d * d;
+      };
+      const auto of = [&valence](int v) { return valence[static_cast<size_t>(v)]; };
+      const int before = deviation(f.A, of(f.A)) + deviation(f.B, of(f.B)) +
+        deviation(f.C, of(f.C)) + deviation(f.D, of(f.D));
+      const int after = deviation(f.A, of(f.A) - 1) + deviation(f.B, of(f.B) - 1) +
+        deviation(f.C, of(f.C) + 1) + deviation(f.D, of(f.D) + 1);
+      if (after >= before || f.SmallestAfter < std::min(f.SmallestBefore, ThinCorner))
+      {
+        return false;
+      }
+      return f.Flatness >= flatEnough ||
+        PairDistance(*surface, point(f.C), point(f.D), point(f.B), point(f.A)) <=
+        PairDistance(*surface, point(f.A), point(f.B), point(f.C), point(f.D));
+    });
+}
 
 /// Per vertex of `remesh`: the triangles it is a corner of.
 std::vector<std::vector<int>> TrianglesAroundVertices(const Remesh& remesh)
@@ -1332,21 +1363,23 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     pinned[v] = dual.Pinned[static_cast<size_t>(dualOf[v])];
   }
   remesh.FlippedEdges = FlipThinTriangles(remesh.Points, pinned, remesh.Triangles);
-  remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles);
-  // Most remeshes have no thin triangle left: look before building the input's k-d tree.
+  if (!surface)
+  {
+    remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles);
+    SplitPinchedVertices(remesh);
+    remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);
+    return remesh;
+  }
+  // The input lets the flips and the moves below check how far the remesh is from it.
+  const SurfaceProjector projector(*surface);
+  remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);
+  // Most remeshes have no thin triangle left.
   const bool anyThin = std::any_of(remesh.Triangles.begin(), remesh.Triangles.end(),
     [&remesh](const std::array<int, 3>& t)
     {
       return SmallestCorner(&remesh.Points[3 * t[0]], &remesh.Points[3 * t[1]],
                &remesh.Points[3 * t[2]]) < ThinCorner;
     });
-  if (!surface)
-  {
-    SplitPinchedVertices(remesh);
-    remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);
-    return remesh;
-  }
-  const SurfaceProjector projector(*surface);
   if (anyThin)
   {
     remesh.MovedVertices = RelaxThinTriangles(remesh, pinned, projector, false);
@@ -1371,6 +1404,8 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
   }
   remesh.FittedVertices =
     FitToSurface(remesh, pinned, *surface, projector, FarFromInput * BoundingBoxDiagonal(*surface));
+  // Collapses change valences and moves change angles: flips the first pass could not take.
+  remesh.ValenceFlips += FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);
   SplitPinchedVertices(remesh);
   remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);
   return remesh;

@@ -39,15 +39,16 @@ struct Remesh
 /// `maximumHole` edges are closed (by the triangulation whose thinnest triangle is widest):
 /// those with a vertex off the input's border, and the shortest loops of border cells beyond the
 /// input's number of boundary loops. Edges of nearly coplanar pairs are then flipped where that
-/// widens thin triangles, or brings valences closer to 6 without a corner under 30 degrees.
-/// Given the input `surface`, free vertices of triangles with a corner under 30 degrees are then
-/// moved along it where that widens them, and where that is not enough an edge of theirs is
-/// collapsed (the remesh then has a vertex fewer) if that widens the triangles around it; the
-/// vertices of thin triangles left, free or pinned to a crease (not to the border), then search
-/// the surface around them for wider places. Last, free vertices move towards input points
-/// that lie farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and
-/// ridges thinner than the cells), where that brings them closer without a corner under 30
-/// degrees.
+/// widens thin triangles, or brings valences closer to 6 without a corner under 30 degrees
+/// (given the input `surface`, also pairs bent by up to 90 degrees where the new pair lies no
+/// farther from it; again after the moves and collapses). Given the input, free vertices of
+/// triangles with a corner under 30 degrees are then moved along it where that widens them, and
+/// where that is not enough an edge of theirs is collapsed (the remesh then has a vertex fewer) if
+/// that widens the triangles around it; the vertices of thin triangles left, free or pinned to a
+/// crease (not to the border), then search the surface around them for wider places. Last, free
+/// vertices move towards input points that lie farther than 0.8% of the input's bounding-box
+/// diagonal from the remesh (tips and ridges thinner than the cells), where that brings them closer
+/// without a corner under 30 degrees.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 

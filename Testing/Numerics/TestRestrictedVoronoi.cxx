@@ -639,6 +639,83 @@ TEST(RestrictedVoronoi, RemeshFlipsTowardsValenceSix)
   }
 }
 
+TEST(RestrictedVoronoi, RemeshFlipsBentPairsTowardsValenceSixWhereTheyStayOnTheInput)
+{
+  // The grid above with the odd square's far corner lifted by 1: its pair bends by 55 degrees
+  // and would by 60 once flipped, as round sites added on a thin part. Past 30 degrees a flip
+  // changes the shape, so it is taken only where the new pair lies no farther from the input:
+  // on an input whose square has the other diagonal (the flip puts the remesh onto it), not on
+  // an input that is the remesh itself, nor without an input.
+  std::vector<std::array<double, 3>> points;
+  for (int j = 0; j <= 5; ++j)
+  {
+    for (int i = 0; i <= 5; ++i)
+    {
+      points.push_back({ double(i), double(j), i == 3 && j == 3 ? 1.0 : 0.0 });
+    }
+  }
+  const auto id = [](int i, int j) { return j * 6 + i; };
+  const auto gridTriangles = [&id](bool oddSquare)
+  {
+    std::vector<std::array<int, 3>> triangles;
+    for (int j = 0; j < 5; ++j)
+    {
+      for (int i = 0; i < 5; ++i)
+      {
+        const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+        if (oddSquare && i == 2 && j == 2)
+        {
+          triangles.push_back({ a, b, d });
+          triangles.push_back({ b, c, d });
+        }
+        else
+        {
+          triangles.push_back({ a, b, c });
+          triangles.push_back({ a, c, d });
+        }
+      }
+    }
+    return triangles;
+  };
+  cvt::RestrictedDual dual = DualAt(points, false, {});
+  dual.Triangles = gridTriangles(true);
+  for (int i = 0; i <= 5; ++i)
+  {
+    for (int v : { id(i, 0), id(i, 5), id(0, i), id(5, i) })
+    {
+      dual.OnBoundary[v] = 1;
+    }
+  }
+  const auto inputWith = [&](bool oddSquare)
+  {
+    cvt::SurfaceMesh input;
+    for (const auto& p : points)
+    {
+      input.Points.insert(input.Points.end(), p.begin(), p.end());
+    }
+    input.Triangles = gridTriangles(oddSquare);
+    return input;
+  };
+  const cvt::SurfaceMesh flippedInput = inputWith(false), sameInput = inputWith(true);
+  for (const auto& [input, flips] :
+    { std::pair(&flippedInput, 1), { &sameInput, 0 }, { nullptr, 0 } })
+  {
+    const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1, 8, input);
+    EXPECT_EQ(remesh.ValenceFlips, flips);
+    std::map<int, int> valenceOfSite;
+    for (const auto& [vertex, edges] : Valences(remesh.Triangles))
+    {
+      valenceOfSite[remesh.SiteIds[vertex]] = edges;
+    }
+    EXPECT_EQ(valenceOfSite.at(id(2, 2)), flips ? 6 : 5); // two corners of the odd square
+    EXPECT_EQ(valenceOfSite.at(id(3, 2)), flips ? 6 : 7);
+    if (input)
+    {
+      EXPECT_EQ(remesh.MovedVertices + remesh.FittedVertices + remesh.CollapsedEdges, 0);
+    }
+  }
+}
+
 TEST(RestrictedVoronoi, RemeshFillsHolesWithTheWidestTriangles)
 {
   // A ring between two long octagons: the inner one is a hole of eight edges, away from the
