@@ -310,8 +310,8 @@ private:
   PointTree<3> Tree;
 };
 
-/// How far a pair of triangles on `diagonal` (a, b) with the other corners c and d lies from
-/// the surface: its farthest centroid or the diagonal's midpoint.
+/// How far a pair of triangles on the diagonal (a, b), with the other corners c and d, lies
+/// from the surface: its farthest centroid or the diagonal's midpoint.
 double PairDistance(const SurfaceProjector& surface, const double* a, const double* b,
   const double* c, const double* d)
 {
@@ -336,9 +336,11 @@ double PairDistance(const SurfaceProjector& surface, const double* a, const doub
 int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<char>& pinned,
   std::vector<std::array<int, 3>>& triangles, const SurfaceProjector* surface = nullptr)
 {
-  const double flatEnough = std::cos(30.0 * 3.14159265358979323846 / 180.0);
+  // Pairs this close to coplanar flip on valences and angles alone.
+  constexpr double flatDegrees = 30.0;
+  const double flatEnough = std::cos(flatDegrees * 3.14159265358979323846 / 180.0);
   const auto point = [&points](int v) { return &points[3 * static_cast<size_t>(v)]; };
-  return FlipEdges(points, pinned, triangles, surface ? 90.0 : 30.0,
+  return FlipEdges(points, pinned, triangles, surface ? 90.0 : flatDegrees,
     [&](const EdgeFlip& f, const std::vector<int>& valence, const std::vector<char>& onBorder)
     {
       const auto deviation = [&onBorder](int v, int edges)
