@@ -739,19 +739,55 @@ int CollapseThinTriangles(
   return collapsed;
 }
 
-/// Moves free vertices towards the input points that lie farthest from the remesh, where those
-/// are farther than `tolerance`: a tip or ridge thinner than the cells (a toe, an ear) lies in
-/// one or two cells, whose flat triangles cut it off. Each input point is measured against the
-/// triangles round its nearest remesh vertex and round that vertex's neighbours. A free vertex
-/// off the border whose own points reach beyond `tolerance` tries the surface points nearest to
-/// the farthest of them and to places a quarter, half and three quarters of the way there, the
-/// farthest first; it takes the first that brings its own points 10% closer, takes no point
-/// within two edges farther than the farthest was, keeps its triangles' corners at 30 degrees
-/// or more (or no smaller than before), turns none of them over and lifts their centroids no
-/// farther from the input than `tolerance` (or than before). Up to three passes, the later
-/// ones round the vertices moved. The connectivity, and so the valences, stay. Returns the
+/// The points of the input a remesh is measured against: its vertices, and points along its
+/// edges longer than `spacing` at most `spacing` apart. A coarse input (CAD) has edges longer
+/// than the cells, whose ridges the remesh cuts across far from any input vertex (pig).
+std::vector<double> InputProbes(const SurfaceMesh& surface, double spacing)
+{
+  std::vector<double> probes(surface.Points);
+  // The long edges, once each (most scans have none).
+  std::vector<std::pair<int, int>> edges;
+  for (const auto& t : surface.Triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      if (Distance2(surface.Point(t[e]), surface.Point(t[(e + 1) % 3])) > spacing * spacing)
+      {
+        edges.emplace_back(std::minmax(t[e], t[(e + 1) % 3]));
+      }
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (const auto& [a, b] : edges)
+  {
+    const double length = std::sqrt(Distance2(surface.Point(a), surface.Point(b)));
+    const int pieces = spacing > 0.0 ? static_cast<int>(std::ceil(length / spacing)) : 1;
+    for (int i = 1; i < pieces; ++i)
+    {
+      const double along = static_cast<double>(i) / pieces;
+      for (int k = 0; k < 3; ++k)
+      {
+        probes.push_back(surface.Point(a)[k] + along * (surface.Point(b)[k] - surface.Point(a)[k]));
+      }
+    }
+  }
+  return probes;
+}
+
+/// Moves free vertices towards the input points (`probes`, see InputProbes) that lie farthest
+/// from the remesh, where those are farther than `tolerance`: a tip or ridge thinner than the cells
+/// (a toe, an ear) lies in one or two cells, whose flat triangles cut it off. Each input point is
+/// measured against the triangles round its nearest remesh vertex and round that vertex's
+/// neighbours. A free vertex off the border whose own points reach beyond `tolerance` tries the
+/// surface points nearest to the farthest of them and to places a quarter, half and three quarters
+/// of the way there, the farthest first; it takes the first that brings its own points 10% closer,
+/// takes no point within two edges farther than the farthest was, keeps its triangles' corners at
+/// 30 degrees or more (or no smaller than before), turns none of them over and lifts their
+/// centroids no farther from the input than `tolerance` (or than before). Up to three passes, the
+/// later ones round the vertices moved. The connectivity, and so the valences, stay. Returns the
 /// number of vertices moved.
-int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceMesh& surface,
+int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vector<double>& probes,
   const SurfaceProjector& projector, double tolerance)
 {
   const int vertices = static_cast<int>(remesh.SiteIds.size());
@@ -813,16 +849,17 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceM
   {
     return 0;
   }
+  const auto probe = [&probes](int p) { return &probes[3 * static_cast<size_t>(p)]; };
   std::vector<std::vector<int>> nearestTo(static_cast<size_t>(vertices));
   {
     PointCloud<3> cloud{ &used };
     PointTree<3> tree(3, cloud);
     tree.buildIndex();
-    for (int p = 0; p < surface.NumberOfPoints(); ++p)
+    for (int p = 0; p < static_cast<int>(probes.size() / 3); ++p)
     {
       std::uint32_t i = 0;
       double d2 = 0.0;
-      tree.knnSearch(surface.Point(p), 1, &i, &d2);
+      tree.knnSearch(probe(p), 1, &i, &d2);
       nearestTo[static_cast<size_t>(usedVertex[i])].push_back(p);
     }
   }
@@ -841,9 +878,8 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceM
         {
           const std::array<int, 3>& c = remesh.Triangles[static_cast<size_t>(t)];
           double q[3], weights[3];
-          ClosestPointOnTriangle(
-            surface.Point(p), point(c[0]), point(c[1]), point(c[2]), q, weights);
-          nearest = std::min(nearest, Distance2(surface.Point(p), q));
+          ClosestPointOnTriangle(probe(p), point(c[0]), point(c[1]), point(c[2]), q, weights);
+          nearest = std::min(nearest, Distance2(probe(p), q));
           if (nearest <= largest)
           {
             break; // not the farthest point: the rest of its triangles cannot change that
@@ -942,7 +978,7 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const SurfaceM
         double target[3], q[3], weights[3];
         for (int k = 0; k < 3; ++k)
         {
-          target[k] = start[k] + reach * (surface.Point(far)[k] - start[k]);
+          target[k] = start[k] + reach * (probe(far)[k] - start[k]);
         }
         const int triangle = projector.Nearest(target, q, weights);
         if (triangle < 0)
@@ -1404,8 +1440,9 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     }
     remesh.MovedVertices += RelaxThinTriangles(remesh, onPinnedBorder, projector, true);
   }
-  remesh.FittedVertices =
-    FitToSurface(remesh, pinned, *surface, projector, FarFromInput * BoundingBoxDiagonal(*surface));
+  const double tolerance = FarFromInput * BoundingBoxDiagonal(*surface);
+  const std::vector<double> probes = InputProbes(*surface, tolerance);
+  remesh.FittedVertices = FitToSurface(remesh, pinned, probes, projector, tolerance);
   // Collapses change valences and moves change angles: flips the first pass could not take.
   remesh.ValenceFlips += FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);
   SplitPinchedVertices(remesh);

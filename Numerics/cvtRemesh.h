@@ -46,9 +46,9 @@ struct Remesh
 /// where that is not enough an edge of theirs is collapsed (the remesh then has a vertex fewer) if
 /// that widens the triangles around it; the vertices of thin triangles left, free or pinned to a
 /// crease (not to the border), then search the surface around them for wider places. Last, free
-/// vertices move towards input points that lie farther than 0.8% of the input's bounding-box
-/// diagonal from the remesh (tips and ridges thinner than the cells), where that brings them closer
-/// without a corner under 30 degrees.
+/// vertices move towards input points (its vertices, and points along its long edges) that lie
+/// farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and ridges
+/// thinner than the cells), where that brings them closer without a corner under 30 degrees.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 

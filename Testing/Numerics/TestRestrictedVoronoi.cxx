@@ -1029,6 +1029,49 @@ TEST(RestrictedVoronoi, RemeshVerticesReachForTipsTheTrianglesCutOff)
             << " degrees\n";
 }
 
+TEST(RestrictedVoronoi, RemeshVerticesReachForRidgesBetweenInputVertices)
+{
+  // A roof of four triangles (a coarse CAD input): a ridge of length 2 at height 0.5 from
+  // (0, -1) to (0, 1), sloping to z = 0 at x = -1 and x = 1. Every input point is a remesh
+  // vertex, but the free one sits at (0.3, 0) on the right slope, so its fan cuts under the
+  // middle of the ridge by about 0.2, far more than 0.8% of the bounding-box diagonal (2.87). Only
+  // points along the input's edges show it: the vertex then moves onto the ridge, and the
+  // remesh is the roof itself.
+  const double h = 0.5;
+  cvt::SurfaceMesh roof;
+  roof.Points = { -1, -1, 0, 0, -1, h, 1, -1, 0, 1, 1, 0, 0, 1, h, -1, 1, 0 };
+  enum Corner
+  {
+    L1,
+    P,
+    R1,
+    R2,
+    Q,
+    L2
+  };
+  roof.Triangles = { { L1, P, Q }, { L1, Q, L2 }, { P, R1, R2 }, { P, R2, Q } };
+  std::vector<std::array<double, 3>> points = { { 0.3, 0.0, 0.7 * h } };
+  std::vector<char> pinned = { 0 };
+  for (int c = 0; c < 6; ++c)
+  {
+    points.push_back({ roof.Points[3 * c], roof.Points[3 * c + 1], roof.Points[3 * c + 2] });
+    pinned.push_back(1);
+  }
+  cvt::RestrictedDual dual = DualAt(points, true, pinned);
+  const auto ring = [](Corner c) { return 1 + static_cast<int>(c); };
+  dual.Triangles = { { 0, ring(R1), ring(R2) }, { 0, ring(R2), ring(Q) }, { 0, ring(Q), ring(L2) },
+    { 0, ring(L2), ring(L1) }, { 0, ring(L1), ring(P) }, { 0, ring(P), ring(R1) } };
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1, 8, &roof);
+  ASSERT_EQ(remesh.FittedVertices, 1);
+  const int vertex = static_cast<int>(
+    std::find(remesh.SiteIds.begin(), remesh.SiteIds.end(), 0) - remesh.SiteIds.begin());
+  EXPECT_NEAR(remesh.Points[3 * vertex], 0.0, 1e-9); // on the ridge
+  EXPECT_NEAR(remesh.Points[3 * vertex + 2], h, 1e-9);
+  EXPECT_NEAR(remesh.Points[3 * vertex + 1], 0.0, 0.05); // near its middle
+  EXPECT_GE(SmallestAngle(remesh), 30.0);
+  ExpectSourceGivesThePointBack(remesh, roof, vertex);
+}
+
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
 {
   // A square of two triangles, one flipped, plus a duplicate, a degenerate and an unused point.
