@@ -357,7 +357,8 @@ int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<c
       {
         return false;
       }
-      return f.Flatness >= flatEnough ||
+      // (Without the input, FlipEdges offers only pairs within flatDegrees.)
+      return f.Flatness >= flatEnough || !surface ||
         PairDistance(*surface, point(f.C), point(f.D), point(f.B), point(f.A)) <=
         PairDistance(*surface, point(f.A), point(f.B), point(f.C), point(f.D));
     });
