@@ -5,6 +5,9 @@
 # With the shared checks beside the project (../shared/checks), also prints the independent
 # figures: energy F n / A^2 of the sites on the input, Hausdorff distances, valence, angles.
 # Usage: remesh-meshes.sh PATH/TO/cvt [SITES] [MESH...]     (the benchmark mode of issue 10)
+# A MESH is a test mesh's name or a mesh file (.off .obj .stl .ply .vtp .vtk: a user's or a
+# public one); the independent checks measure against a file's cleaned copy (labels.vtp) where
+# they cannot read its format (OFF).
 set -u
 CVT=${1:?usage: remesh-meshes.sh PATH/TO/cvt [SITES] [MESH...]}
 SITES=${2:-1000}
@@ -16,17 +19,26 @@ trap 'rm -rf "$T"' EXIT
 /usr/bin/python3 "$HERE/Python/make_test_meshes.py" "$T/meshes" || { echo "cannot make the test meshes"; exit 1; }
 MESHES=${*:-sphere noisy genus2 genus3 dumbbell holes twoparts pieces box cube plate disk dirty}
 bad=0
-for m in $MESHES; do
+for mesh in $MESHES; do
+  if [ -f "$mesh" ]; then
+    m=$(basename "$mesh"); m=${m%.*}; source="$mesh"
+  else
+    m=$mesh; source="$T/meshes/$m.vtp"
+  fi
   out="$T/$m"
-  if ! env -u DISPLAY "$CVT" surface --input "$T/meshes/$m.vtp" --sites "$SITES" --report \
+  if ! env -u DISPLAY "$CVT" surface --input "$source" --sites "$SITES" --report \
       --output "$out" > "$T/$m.log" 2>&1; then
     echo "$m: cvt failed:"; cat "$T/$m.log"; bad=1; continue
   fi
   input=$(sed -n 's/^  input topology *//p' "$T/$m.log")
   remesh=$(sed -n 's/^  remesh topology *//p' "$T/$m.log")
   line="$m ($SITES sites): $remesh; $(sed -n 's/^  valence 6 *//p' "$T/$m.log") valence 6, angles $(sed -n 's/^  smallest \/ largest angle *//p' "$T/$m.log"); $(sed -n 's/^  seconds: //p' "$T/$m.log")"
+  case $source in
+    *.obj|*.stl|*.ply|*.vtp|*.vtk) checked=$source;;
+    *) checked=$out/labels.vtp;; # the input as cleaned, in a format the checks read
+  esac
   if [ -d "$CHECKS" ]; then
-    line="$line; $(/usr/bin/python3 "$CHECKS/mesh_energy.py" "$T/meshes/$m.vtp" "$out/sites.csv" "$out/remesh.vtp" --samples 400000 | sed 's/.*normalized=/F n \/ A^2 = /')"
+    line="$line; $(/usr/bin/python3 "$CHECKS/mesh_energy.py" "$checked" "$out/sites.csv" "$out/remesh.vtp" --samples 400000 | sed 's/.*normalized=/F n \/ A^2 = /')"
   fi
   echo "$line"
   if [ "$input" != "$remesh" ] || grep -q "topology differs" "$T/$m.log"; then
@@ -34,10 +46,10 @@ for m in $MESHES; do
   fi
   # The independent count, after merging coincident points: no vertex where sheets only touch
   # (not for the dirty mesh, whose input is itself non-manifold).
-  if [ -d "$CHECKS" ] && [ "$m" != dirty ]; then
+  if [ -d "$CHECKS" ] && [ "$m" != dirty ] && [ ! -f "$mesh" ]; then
     independent() { /usr/bin/python3 "$CHECKS/mesh_topology.py" "$1" | grep -o 'components=.*'; }
-    if [ "$(independent "$T/meshes/$m.vtp")" != "$(independent "$out/remesh.vtp")" ]; then
-      echo "  independent topology: input $(independent "$T/meshes/$m.vtp"), remesh $(independent "$out/remesh.vtp")"; bad=1
+    if [ "$(independent "$source")" != "$(independent "$out/remesh.vtp")" ]; then
+      echo "  independent topology: input $(independent "$source"), remesh $(independent "$out/remesh.vtp")"; bad=1
     fi
   fi
   # Closed smooth inputs (no border, no crease) must give well-shaped triangles.
