@@ -14,6 +14,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -57,6 +58,108 @@ int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
     std::abs(a.EulerCharacteristic - b.EulerCharacteristic);
 }
 
+/// Where sites would keep the input's holes apart and open, by the nearest sites of the
+/// input's points (`labels`): a cell that reaches two boundary loops (a strip between holes
+/// narrower than the cells) gets a point on each, its point there nearest to the other loops, so
+/// that each side of the strip gets its own cell; a loop that fewer than three cells reach (the
+/// dual closes a hole only one or two cells border) gets three points a third of its length apart.
+std::vector<double> SplitPointsOnLoops(
+  const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input, const std::vector<int>& labels)
+{
+  std::vector<double> points;
+  // (cell, loop) of every loop point, to find the cells that reach several loops.
+  std::vector<std::pair<int, int>> reach;
+  for (size_t l = 0; l < input.Loops.size(); ++l)
+  {
+    const std::vector<int>& loop = input.Loops[l];
+    std::vector<int> cells;
+    for (int p : loop)
+    {
+      cells.push_back(labels[static_cast<size_t>(p)]);
+      reach.emplace_back(cells.back(), static_cast<int>(l));
+    }
+    std::sort(cells.begin(), cells.end());
+    if (std::unique(cells.begin(), cells.end()) - cells.begin() >= 3)
+    {
+      continue;
+    }
+    std::vector<double> along(loop.size() + 1, 0.0); // arc length at each point
+    for (size_t i = 0; i < loop.size(); ++i)
+    {
+      along[i + 1] = along[i] +
+        std::sqrt(vtkMath::Distance2BetweenPoints(
+          mesh.Point(loop[i]), mesh.Point(loop[(i + 1) % loop.size()])));
+    }
+    for (int third = 0; third < 3; ++third)
+    {
+      const double at = along.back() * third / 3.0;
+      const size_t i = std::upper_bound(along.begin(), along.end(), at) - along.begin() - 1;
+      const double* a = mesh.Point(loop[i]);
+      const double* b = mesh.Point(loop[(i + 1) % loop.size()]);
+      const double length = along[i + 1] - along[i];
+      const double t = length > 0.0 ? (at - along[i]) / length : 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        points.push_back(a[k] + t * (b[k] - a[k]));
+      }
+    }
+  }
+  std::sort(reach.begin(), reach.end());
+  reach.erase(std::unique(reach.begin(), reach.end()), reach.end());
+  for (size_t i = 0; i < reach.size();)
+  {
+    size_t end = i + 1;
+    while (end < reach.size() && reach[end].first == reach[i].first)
+    {
+      ++end;
+    }
+    if (end - i < 2)
+    {
+      i = end;
+      continue;
+    }
+    // The cell's points on each of its loops; on each loop, the one nearest to the others.
+    std::vector<std::vector<int>> on(end - i);
+    for (size_t j = i; j < end; ++j)
+    {
+      for (int p : input.Loops[static_cast<size_t>(reach[j].second)])
+      {
+        if (labels[static_cast<size_t>(p)] == reach[j].first)
+        {
+          on[j - i].push_back(p);
+        }
+      }
+    }
+    for (size_t j = 0; j < on.size(); ++j)
+    {
+      int nearest = on[j].front();
+      double gap = std::numeric_limits<double>::max();
+      for (size_t other = 0; other < on.size(); ++other)
+      {
+        if (other == j)
+        {
+          continue;
+        }
+        for (int p : on[j])
+        {
+          for (int q : on[other])
+          {
+            const double d = vtkMath::Distance2BetweenPoints(mesh.Point(p), mesh.Point(q));
+            if (d < gap)
+            {
+              gap = d;
+              nearest = p;
+            }
+          }
+        }
+      }
+      points.insert(points.end(), mesh.Point(nearest), mesh.Point(nearest) + 3);
+    }
+    i = end;
+  }
+  return points;
+}
+
 /// A remesh and how it came about.
 struct TopologyRefinement
 {
@@ -75,7 +178,9 @@ struct TopologyRefinement
 /// closer, again from `sites` with the next count. A pass gives up after
 /// MaximumRoundsWithoutGain rounds without gain; thin parts alone get rounds while they become
 /// fewer. Returns the remesh with the input's topology and fewest thin parts, else the first of
-/// the closest topology, in `best`; false (and `error`) when the engine fails.
+/// the closest topology, in `best`; false (and `error`) when the engine fails. While the remesh
+/// has other boundary loops than the input, the rounds also add sites that keep holes apart and
+/// open (SplitPointsOnLoops).
 bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
   const cvt::MeshTopology& input, const std::vector<double>& sites,
   const std::function<bool()>& aborted, TopologyRefinement& best, std::string& error)
@@ -96,6 +201,11 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
       return false;
     }
     splitPoints = std::move(dual.SplitPoints);
+    if (cvt::RemeshTopology(dual, input.Loops.size()).BoundaryLoops != input.BoundaryLoops)
+    {
+      const std::vector<double> onLoops = SplitPointsOnLoops(mesh, input, engine.GetPointLabels());
+      splitPoints.insert(splitPoints.end(), onLoops.begin(), onLoops.end());
+    }
     bool gain = dual.ThinParts < fewestThinParts;
     fewestThinParts = std::min(fewestThinParts, dual.ThinParts);
     // With the input's topology reached, only fewer thin parts can do better.
@@ -172,12 +282,14 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
 /// The cleaned, triangulated input (coincident points merged, polygons and strips split).
 vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
 {
-  vtkNew<vtkStaticCleanPolyData> merge; // threaded; tolerance 0 merges equal points only
+  vtkNew<vtkStaticCleanPolyData> merge; // threaded
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
   merge->SetMergingArray(nullptr); // 9.2's constructor allocates a name it never frees
 #endif
   merge->SetInputData(input);
-  merge->SetTolerance(0.0);
+  // Points a billionth of the diagonal apart are one: a parametric surface's seam differs by
+  // rounding (sin 2 pi is not 0), which would leave a slit.
+  merge->SetTolerance(1e-9);
   merge->ConvertLinesToPointsOff();
   merge->ConvertPolysToLinesOff();
   merge->ConvertStripsToPolysOff();

@@ -270,6 +270,54 @@ TEST(RemeshFilter, ThinTailIsKeptWithAddedSites)
   EXPECT_GT(bounds[1], tip - 0.2) << "the tail's tip is at x = " << tip;
 }
 
+TEST(RemeshFilter, HolesCloserThanTheCellsStayApartWithAddedSites)
+{
+  // A unit-diameter sphere with two round holes (radius 0.1) whose rims come within 0.06 of
+  // each other, remeshed with 150 sites (cells about 0.15 across): the cells round the strip
+  // between the holes reach both rims, and their dual makes one hole of the two. Sites are
+  // added on either side of the strip until each hole has its own border.
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(120);
+  source->SetPhiResolution(120);
+  source->Update();
+  vtkPolyData* sphere = source->GetOutput();
+  const double centres[2][3] = { { 0.5, 0.13, 0.0 }, { 0.5, -0.13, 0.0 } };
+  vtkNew<vtkCellArray> kept;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < sphere->GetNumberOfPolys(); ++c)
+  {
+    sphere->GetCellPoints(c, ids);
+    double centroid[3] = { 0, 0, 0 };
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      double x[3];
+      sphere->GetPoint(ids->GetId(k), x);
+      for (int d = 0; d < 3; ++d)
+      {
+        centroid[d] += x[d] / ids->GetNumberOfIds();
+      }
+    }
+    const auto outside = [&centroid](const double* centre)
+    {
+      const double along = 0.5 / std::sqrt(centre[0] * centre[0] + centre[1] * centre[1]);
+      const double d[3] = { centroid[0] - along * centre[0], centroid[1] - along * centre[1],
+        centroid[2] };
+      return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > 0.1 * 0.1;
+    };
+    if (outside(centres[0]) && outside(centres[1]))
+    {
+      kept->InsertNextCell(ids);
+    }
+  }
+  vtkNew<vtkPolyData> input;
+  input->SetPoints(sphere->GetPoints());
+  input->SetPolys(kept);
+  RemeshRun run(input, 150, 60);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 1, 0, 2);
+  EXPECT_GT(Field(run.Filter->GetSitesOutput(), "AddedSites"), 0);
+}
+
 TEST(RemeshFilter, HoleFarSmallerThanTheCellsEndsTheRoundsEarly)
 {
   // A sphere with a triangular hole 20 times smaller than its triangles (about 0.006 across)
