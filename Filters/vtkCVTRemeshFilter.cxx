@@ -67,8 +67,8 @@ std::vector<double> SplitPointsOnLoops(
   const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input, const std::vector<int>& labels)
 {
   std::vector<double> points;
-  // (cell, loop) of every loop point, to find the cells that reach several loops.
-  std::vector<std::pair<int, int>> reach;
+  // (cell, loop, point) of every loop point, to find the cells that reach several loops.
+  std::vector<std::array<int, 3>> reach;
   for (size_t l = 0; l < input.Loops.size(); ++l)
   {
     const std::vector<int>& loop = input.Loops[l];
@@ -76,20 +76,14 @@ std::vector<double> SplitPointsOnLoops(
     for (int p : loop)
     {
       cells.push_back(labels[static_cast<size_t>(p)]);
-      reach.emplace_back(cells.back(), static_cast<int>(l));
+      reach.push_back({ cells.back(), static_cast<int>(l), p });
     }
     std::sort(cells.begin(), cells.end());
     if (std::unique(cells.begin(), cells.end()) - cells.begin() >= 3)
     {
       continue;
     }
-    std::vector<double> along(loop.size() + 1, 0.0); // arc length at each point
-    for (size_t i = 0; i < loop.size(); ++i)
-    {
-      along[i + 1] = along[i] +
-        std::sqrt(vtkMath::Distance2BetweenPoints(
-          mesh.Point(loop[i]), mesh.Point(loop[(i + 1) % loop.size()])));
-    }
+    const std::vector<double> along = cvt::LoopLengths(mesh.Points, loop);
     for (int third = 0; third < 3; ++third)
     {
       const double at = along.back() * third / 3.0;
@@ -104,58 +98,50 @@ std::vector<double> SplitPointsOnLoops(
       }
     }
   }
+  // Each cell's points, loop by loop; on each loop of a cell that reaches several, the point
+  // nearest to its points on the others.
   std::sort(reach.begin(), reach.end());
-  reach.erase(std::unique(reach.begin(), reach.end()), reach.end());
-  for (size_t i = 0; i < reach.size();)
+  for (size_t first = 0; first < reach.size();)
   {
-    size_t end = i + 1;
-    while (end < reach.size() && reach[end].first == reach[i].first)
+    const int cell = reach[first][0];
+    size_t last = first;
+    while (last < reach.size() && reach[last][0] == cell)
     {
-      ++end;
+      ++last;
     }
-    if (end - i < 2)
+    if (reach[first][1] != reach[last - 1][1]) // more than one loop
     {
-      i = end;
-      continue;
-    }
-    // The cell's points on each of its loops; on each loop, the one nearest to the others.
-    std::vector<std::vector<int>> on(end - i);
-    for (size_t j = i; j < end; ++j)
-    {
-      for (int p : input.Loops[static_cast<size_t>(reach[j].second)])
+      for (size_t start = first; start < last;)
       {
-        if (labels[static_cast<size_t>(p)] == reach[j].first)
+        size_t end = start;
+        while (end < last && reach[end][1] == reach[start][1])
         {
-          on[j - i].push_back(p);
+          ++end;
         }
-      }
-    }
-    for (size_t j = 0; j < on.size(); ++j)
-    {
-      int nearest = on[j].front();
-      double gap = std::numeric_limits<double>::max();
-      for (size_t other = 0; other < on.size(); ++other)
-      {
-        if (other == j)
+        int nearest = reach[start][2];
+        double gap = std::numeric_limits<double>::max();
+        for (size_t i = start; i < end; ++i)
         {
-          continue;
-        }
-        for (int p : on[j])
-        {
-          for (int q : on[other])
+          for (size_t j = first; j < last; ++j)
           {
-            const double d = vtkMath::Distance2BetweenPoints(mesh.Point(p), mesh.Point(q));
+            if (reach[j][1] == reach[i][1])
+            {
+              continue; // the same loop
+            }
+            const double d =
+              vtkMath::Distance2BetweenPoints(mesh.Point(reach[i][2]), mesh.Point(reach[j][2]));
             if (d < gap)
             {
               gap = d;
-              nearest = p;
+              nearest = reach[i][2];
             }
           }
         }
+        points.insert(points.end(), mesh.Point(nearest), mesh.Point(nearest) + 3);
+        start = end;
       }
-      points.insert(points.end(), mesh.Point(nearest), mesh.Point(nearest) + 3);
     }
-    i = end;
+    first = last;
   }
   return points;
 }
@@ -201,7 +187,8 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
       return false;
     }
     splitPoints = std::move(dual.SplitPoints);
-    if (cvt::RemeshTopology(dual, input.Loops.size()).BoundaryLoops != input.BoundaryLoops)
+    const cvt::MeshTopology topology = cvt::RemeshTopology(dual, input.Loops.size());
+    if (topology.BoundaryLoops != input.BoundaryLoops)
     {
       const std::vector<double> onLoops = SplitPointsOnLoops(mesh, input, engine.GetPointLabels());
       splitPoints.insert(splitPoints.end(), onLoops.begin(), onLoops.end());
@@ -211,7 +198,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
     // With the input's topology reached, only fewer thin parts can do better.
     if (best.Mismatch != 0 || dual.ThinParts < best.Dual.ThinParts)
     {
-      const int mismatch = TopologyMismatch(cvt::RemeshTopology(dual, input.Loops.size()), input);
+      const int mismatch = TopologyMismatch(topology, input);
       if (mismatch < best.Mismatch || (mismatch == 0 && dual.ThinParts < best.Dual.ThinParts))
       {
         best.Dual = std::move(dual);

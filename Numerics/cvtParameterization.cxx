@@ -1,5 +1,7 @@
 #include "cvtParameterization.h"
 
+#include "cvtSurfaceMesh.h" // for LoopLengths
+
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -202,12 +204,7 @@ bool ParameterizeDisk(const TriangleMesh& mesh, std::vector<double>& uv, std::st
   // Boundary: arc length around the loop, onto the square's perimeter (4 sides of length 1).
   uv.assign(2 * static_cast<size_t>(n), 0.0);
   std::vector<int> fixed(n, 0);
-  std::vector<double> arc(loop.size() + 1, 0.0);
-  for (size_t k = 0; k < loop.size(); ++k)
-  {
-    arc[k + 1] =
-      arc[k] + Norm3(&mesh.Points[3 * loop[k]], &mesh.Points[3 * loop[(k + 1) % loop.size()]]);
-  }
+  const std::vector<double> arc = LoopLengths(mesh.Points, loop);
   for (size_t k = 0; k < loop.size(); ++k)
   {
     const double t = 4.0 * arc[k] / arc.back();

@@ -452,6 +452,20 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   return std::string();
 }
 
+std::vector<double> LoopLengths(const std::vector<double>& points, const std::vector<int>& loop)
+{
+  std::vector<double> lengths(loop.size() + 1, 0.0);
+  for (size_t k = 0; k < loop.size(); ++k)
+  {
+    const double* a = &points[3 * static_cast<size_t>(loop[k])];
+    const double* b = &points[3 * static_cast<size_t>(loop[(k + 1) % loop.size()])];
+    lengths[k + 1] = lengths[k] +
+      std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+        (a[2] - b[2]) * (a[2] - b[2]));
+  }
+  return lengths;
+}
+
 std::vector<std::vector<int>> TraceLoops(const std::vector<std::pair<int, int>>& edges)
 {
   std::unordered_map<int, std::vector<int>> outgoing;

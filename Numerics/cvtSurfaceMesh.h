@@ -77,6 +77,11 @@ struct MeshTopology
 CVTNUMERICS_EXPORT std::vector<std::vector<int>> TraceLoops(
   const std::vector<std::pair<int, int>>& edges);
 
+/// The length of the closed loop of `points` (x, y, z each) indexed by `loop` up to each of its
+/// points: loop.size() + 1 values, 0 first and the whole length last.
+CVTNUMERICS_EXPORT std::vector<double> LoopLengths(
+  const std::vector<double>& points, const std::vector<int>& loop);
+
 /// Topology of an edge-manifold, consistently oriented mesh (after RepairSurfaceMesh).
 CVTNUMERICS_EXPORT MeshTopology ComputeMeshTopology(
   int numberOfPoints, const std::vector<std::array<int, 3>>& triangles);
