@@ -164,6 +164,7 @@ int RunRemesh(const Options& options)
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
+              << Field(remesh, "DroppedFragments") << " fragments dropped, "
               << Field(remesh, "SplitVertices") << " pinched vertices split, "
               << Field(remesh, "SeparatedVertices") << " coincident vertices separated, "
               << Field(remesh, "FlippedEdges") << " edges flipped for angles, "

@@ -486,6 +486,7 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
   cvtvtk::AddMeshQuality(fields, cvt::MeasureMesh(remesh.Points, remesh.Triangles));
   cvtvtk::AddFieldValue(fields, "RemovedTriangles", remesh.RemovedTriangles);
   cvtvtk::AddFieldValue(fields, "FilledHoles", remesh.FilledHoles);
+  cvtvtk::AddFieldValue(fields, "DroppedFragments", remesh.DroppedFragments);
   cvtvtk::AddFieldValue(fields, "SplitVertices", remesh.SplitVertices);
   cvtvtk::AddFieldValue(fields, "FlippedEdges", remesh.FlippedEdges);
   cvtvtk::AddFieldValue(fields, "ValenceFlips", remesh.ValenceFlips);

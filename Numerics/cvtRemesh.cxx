@@ -9,11 +9,13 @@
 #include <limits>
 #include <map>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "cvtEdgeTable.h"
 #include "cvtGeometry.h"
 #include "cvtPointCloud.h"
+#include "cvtUnionFind.h"
 
 namespace cvt
 {
@@ -1177,6 +1179,63 @@ int SeparateCoincidentVertices(Remesh& remesh)
 
 /// The remesh's triangles and vertices from the dual, before any shaping (BuildRemesh's steps up
 /// to the flips); `dualOf` gets the dual vertex of each remesh vertex.
+/// Drops the pieces (joined by edges) of at most MaximumFragment triangles whose part of the
+/// input also holds a larger piece: what the dropped non-manifold triangles around a few cells
+/// left of them (a lone triangle, or two pinched at their vertices), which would give the
+/// remesh more parts than the input (and a border loop that closing it as a hole makes a
+/// pillow). The largest piece of each part stays, however small (a part of the input smaller
+/// than the cells). Their directed edges leave `directed`. Returns how many pieces went.
+int DropFragments(const RestrictedDual& dual, std::vector<std::array<int, 3>>& triangles,
+  std::unordered_map<std::uint64_t, int>& directed)
+{
+  constexpr size_t MaximumFragment = 2;
+  UnionFind pieces(triangles.size());
+  std::unordered_map<std::uint64_t, int> onEdge; // undirected edge -> a triangle on it
+  for (size_t k = 0; k < triangles.size(); ++k)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const int a = triangles[k][e], b = triangles[k][(e + 1) % 3];
+      const auto found = onEdge.emplace(DirectedKey(std::min(a, b), std::max(a, b)), k);
+      if (!found.second)
+      {
+        pieces.Join(static_cast<int>(k), found.first->second);
+      }
+    }
+  }
+  std::vector<size_t> size(triangles.size(), 0);
+  for (size_t k = 0; k < triangles.size(); ++k)
+  {
+    ++size[pieces.Find(static_cast<int>(k))];
+  }
+  const auto partOf = [&dual](const std::array<int, 3>& t)
+  { return dual.Parts.empty() ? 0 : dual.Parts[static_cast<size_t>(t[0])]; };
+  std::unordered_map<int, size_t> largest; // per part of the input
+  for (size_t k = 0; k < triangles.size(); ++k)
+  {
+    size_t& most = largest[partOf(triangles[k])];
+    most = std::max(most, size[pieces.Find(static_cast<int>(k))]);
+  }
+  std::unordered_set<int> dropped;
+  size_t last = 0;
+  for (size_t k = 0; k < triangles.size(); ++k)
+  {
+    const int piece = pieces.Find(static_cast<int>(k));
+    if (size[piece] <= MaximumFragment && size[piece] < largest[partOf(triangles[k])])
+    {
+      dropped.insert(piece);
+      for (int e = 0; e < 3; ++e)
+      {
+        directed.erase(DirectedKey(triangles[k][e], triangles[k][(e + 1) % 3]));
+      }
+      continue;
+    }
+    triangles[last++] = triangles[k];
+  }
+  triangles.resize(last);
+  return static_cast<int>(dropped.size());
+}
+
 Remesh ConnectRemesh(
   const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole, std::vector<int>& dualOf)
 {
@@ -1244,6 +1303,7 @@ Remesh ConnectRemesh(
     }
     kept.resize(last);
   }
+  remesh.DroppedFragments = DropFragments(dual, kept, directed);
   // Holes: loops of edges with no twin. A loop along the input's border is part of the
   // surface; a short loop elsewhere is where cells met in a degenerate point: close it.
   std::vector<std::pair<int, int>> border;

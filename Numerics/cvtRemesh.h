@@ -23,31 +23,33 @@ struct Remesh
   std::vector<double> SourceBarycentric; // 3 per vertex, in that triangle
   int RemovedTriangles = 0;              // dropped to keep edges manifold
   int FilledHoles = 0;                   // small holes closed (cells meeting in a degenerate point)
-  int SplitVertices = 0;                 // pinched vertices given one copy per extra fan
-  int FlippedEdges = 0;                  // diagonals flipped to widen thin triangles
-  int ValenceFlips = 0;                  // diagonals flipped to bring valences closer to 6
-  int MovedVertices = 0;                 // free vertices of thin triangles moved along the surface
-  int CollapsedEdges = 0;                // edges of thin triangles collapsed (a vertex fewer each)
-  int SeparatedVertices = 0;             // vertices at one place moved apart (split copies)
-  int FittedVertices = 0; // free vertices moved towards input tips and ridges the remesh cut off
+  int DroppedFragments = 0;  // pieces of 1-2 triangles cut off from a larger one of their part
+  int SplitVertices = 0;     // pinched vertices given one copy per extra fan
+  int FlippedEdges = 0;      // diagonals flipped to widen thin triangles
+  int ValenceFlips = 0;      // diagonals flipped to bring valences closer to 6
+  int MovedVertices = 0;     // free vertices of thin triangles moved along the surface
+  int CollapsedEdges = 0;    // edges of thin triangles collapsed (a vertex fewer each)
+  int SeparatedVertices = 0; // vertices at one place moved apart (split copies)
+  int FittedVertices = 0;    // free vertices moved towards input tips and ridges the remesh cut off
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
 /// points (boundary points for cells on the border), triangles the restricted Delaunay ones;
 /// triangles that would make an edge non-manifold are dropped, as are pairs on the same three
-/// sites, vertices where sheets meet are split, and holes of at most
-/// `maximumHole` edges are closed (by the triangulation whose thinnest triangle is widest):
-/// those with a vertex off the input's border, and the shortest loops of border cells beyond the
-/// input's number of boundary loops. Edges of nearly coplanar pairs are then flipped where that
-/// widens thin triangles, or brings valences closer to 6 without a corner under 30 degrees
-/// (given the input `surface`, also pairs bent by up to 90 degrees where the new pair lies no
-/// farther from it; again after the moves and collapses). Given the input, free vertices of
-/// triangles with a corner under 30 degrees are then moved along it where that widens them, and
-/// where that is not enough an edge of theirs is collapsed (the remesh then has a vertex fewer) if
-/// that widens the triangles around it; the vertices of thin triangles left, free or pinned to a
-/// crease (not to the border), then search the surface around them for wider places. Last, free
-/// vertices move towards input points (its vertices, and points along its long edges) that lie
-/// farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and ridges
+/// sites, and pieces of one or two triangles joined to the rest by no edge on a part of the
+/// input that has a larger piece (RestrictedDual::Parts); vertices where sheets meet are split,
+/// and holes of at most `maximumHole` edges are closed (by the triangulation whose thinnest
+/// triangle is widest): those with a vertex off the input's border, and the shortest loops of
+/// border cells beyond the input's number of boundary loops. Edges of nearly coplanar pairs are
+/// then flipped where that widens thin triangles, or brings valences closer to 6 without a corner
+/// under 30 degrees (given the input `surface`, also pairs bent by up to 90 degrees where the new
+/// pair lies no farther from it; again after the moves and collapses). Given the input, free
+/// vertices of triangles with a corner under 30 degrees are then moved along it where that widens
+/// them, and where that is not enough an edge of theirs is collapsed (the remesh then has a vertex
+/// fewer) if that widens the triangles around it; the vertices of thin triangles left, free or
+/// pinned to a crease (not to the border), then search the surface around them for wider places.
+/// Last, free vertices move towards input points (its vertices, and points along its long edges)
+/// that lie farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and ridges
 /// thinner than the cells), where that brings them closer without a corner under 30 degrees.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);

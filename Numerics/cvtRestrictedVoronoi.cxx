@@ -4,6 +4,7 @@
 #include "cvtGeometry.h"
 #include "cvtPointCloud.h"
 #include "cvtThreads.h"
+#include "cvtUnionFind.h"
 
 #include "vtkSMPTools.h"
 
@@ -102,6 +103,7 @@ struct RestrictedVoronoi::Internals
   std::vector<std::vector<Piece>> BlockPieces;
   std::vector<std::vector<std::array<int, 4>>> BlockTriples; // sites i, j, k and the triangle
   std::vector<std::array<int, 3>> Adjacent; // per triangle edge: the triangle across it, or -1
+  std::vector<int> TriangleParts;           // per triangle: its connected part of the mesh
   std::vector<std::vector<SiteContact>> BlockContacts;
 
   void LabelPoints();
@@ -988,6 +990,22 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
       }
     }
   }
+  UnionFind parts(static_cast<size_t>(triangleCount));
+  for (int t = 0; t < triangleCount; ++t)
+  {
+    for (int across : d.Adjacent[t])
+    {
+      if (across >= 0)
+      {
+        parts.Join(t, across);
+      }
+    }
+  }
+  d.TriangleParts.resize(triangleCount);
+  for (int t = 0; t < triangleCount; ++t)
+  {
+    d.TriangleParts[t] = parts.Find(t);
+  }
   // Fixed blocks of triangles: the sums are added in the same order for any thread count.
   d.BlockCount = std::max(1, std::min(256, triangleCount / 256));
   d.BlockPieces.assign(d.BlockCount, {});
@@ -1358,12 +1376,14 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       }
     }
   }
+  dual.Parts.assign(siteCount, -1);
   for (size_t i = 0; i < siteCount; ++i)
   {
     if (dual.SurfaceTriangles[i] >= 0)
     {
       d.Barycentric(
         dual.SurfaceTriangles[i], &dual.SurfacePoints[3 * i], &dual.SurfaceBarycentric[3 * i]);
+      dual.Parts[i] = d.TriangleParts[dual.SurfaceTriangles[i]];
     }
     dual.Pinned[i] = boundaryRank[i] > 0;
     if (dual.Pinned[i])

@@ -31,6 +31,9 @@ struct RestrictedDual
   std::vector<double> SurfacePoints;
   std::vector<int> SurfaceTriangles;
   std::vector<double> SurfaceBarycentric;
+  /// Per vertex: the connected part of the mesh holding its cell part (a representative
+  /// triangle's index; -1: none). Empty: the mesh is taken as one part.
+  std::vector<int> Parts;
   /// Per vertex: whether its cell part meets the mesh's border; whether it meets the border or a
   /// sharp feature line (edges whose triangles meet at more than 60 degrees, in lines spanning
   /// 15% of the bounding-box diagonal with few junctions), and then the point of those lines it

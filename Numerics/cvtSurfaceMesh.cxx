@@ -2,6 +2,7 @@
 
 #include "cvtEdgeTable.h"
 #include "cvtSampling.h"
+#include "cvtUnionFind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,25 +28,6 @@ double TriangleArea(const SurfaceMesh& mesh, const std::array<int, 3>& t)
     u[0] * v[1] - u[1] * v[0] };
   return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
-
-struct UnionFind
-{
-  explicit UnionFind(size_t n)
-    : Parent(n)
-  {
-    std::iota(this->Parent.begin(), this->Parent.end(), 0);
-  }
-  int Find(int i)
-  {
-    while (this->Parent[i] != i)
-    {
-      i = this->Parent[i] = this->Parent[this->Parent[i]];
-    }
-    return i;
-  }
-  void Join(int a, int b) { this->Parent[this->Find(a)] = this->Find(b); }
-  std::vector<int> Parent;
-};
 
 std::string Where(const SurfaceMesh& mesh, int point)
 {

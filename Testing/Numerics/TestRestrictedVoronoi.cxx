@@ -30,6 +30,7 @@ namespace
 using cvttest::FlatSquare;
 using cvttest::Sphere;
 using cvttest::Tube;
+using cvttest::TwoParts;
 
 /// The smallest corner of a remesh's triangles, in degrees.
 double SmallestAngle(const cvt::Remesh& remesh)
@@ -457,6 +458,31 @@ TEST(RestrictedVoronoi, DualFindsCellPartsThatAreNotDisks)
   EXPECT_TRUE(dual.SplitPoints.empty());
 }
 
+TEST(RestrictedVoronoi, DualTellsThePartOfTheInputOfEachCellPart)
+{
+  // Two unit squares side by side, touching along x = 1 but not joined (like a CAD model's
+  // patches): the cell of the site above that line has a part on each square.
+  const cvt::SurfaceMesh squares = TwoParts(FlatSquare(8, 0.0, 1.0), FlatSquare(8, 0.0, 1.0), 1.0);
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(squares));
+  ASSERT_TRUE(
+    engine.SetSites({ 0.5, 0.25, 0, 0.5, 0.75, 0, 1.0, 0.5, 0.1, 1.5, 0.25, 0, 1.5, 0.75, 0 }));
+  cvt::RestrictedDual dual;
+  ASSERT_TRUE(engine.ComputeDual(dual));
+  ASSERT_EQ(dual.Sites.size(), 6u); // the middle site twice
+  ASSERT_EQ(dual.Parts.size(), dual.Sites.size());
+  std::set<int> left, right;
+  for (size_t v = 0; v < dual.Sites.size(); ++v)
+  {
+    (dual.SurfaceTriangles[v] < 2 * 8 * 8 ? left : right).insert(dual.Parts[v]);
+  }
+  ASSERT_EQ(left.size(), 1u);
+  ASSERT_EQ(right.size(), 1u);
+  EXPECT_NE(*left.begin(), *right.begin());
+  EXPECT_GE(*left.begin(), 0);
+  EXPECT_GE(*right.begin(), 0);
+}
+
 TEST(RestrictedVoronoi, OpenSquareRemeshKeepsItsBorder)
 {
   const cvt::SurfaceMesh mesh = FlatSquare(20, 0.0, 1.0);
@@ -526,6 +552,46 @@ TEST(RestrictedVoronoi, RemeshOfThinPartsIsManifold)
   EXPECT_EQ(quick.Components, 2);
   EXPECT_EQ(quick.BoundaryLoops, 0);
   EXPECT_EQ(quick.EulerCharacteristic, 4);
+}
+
+TEST(RestrictedVoronoi, RemeshDropsFragmentsButKeepsSmallParts)
+{
+  // A 5 x 5 grid of cells on a square (part 0), a lone triangle pinched to its corner 24 that
+  // the dropped non-manifold triangles around it left (part 0 too), and a part of the input
+  // smaller than the cells (part 1), whose remesh is one triangle. All on the input's border,
+  // which has two loops: the fragment's would be a third, closed as a hole into a pillow.
+  std::vector<std::array<double, 3>> points;
+  for (int j = 0; j < 5; ++j)
+  {
+    for (int i = 0; i < 5; ++i)
+    {
+      points.push_back({ double(i), double(j), 0.0 });
+    }
+  }
+  points.insert(points.end(),
+    { { 5.0, 4.5, 0.0 }, { 4.5, 5.0, 0.0 }, // the fragment's
+      { 10.0, 10.0, 0.0 }, { 11.0, 10.0, 0.0 }, { 10.0, 11.0, 0.0 } });
+  cvt::RestrictedDual dual = DualAt(points, true, {});
+  AddGridTriangles(dual);
+  dual.Triangles.push_back({ 24, 25, 26 });
+  dual.Triangles.push_back({ 27, 28, 29 });
+  dual.Parts.assign(points.size(), 0);
+  dual.Parts[27] = dual.Parts[28] = dual.Parts[29] = 1;
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 2);
+  for (const bool built : { false, true })
+  {
+    const cvt::MeshTopology topology = built
+      ? cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles)
+      : cvt::RemeshTopology(dual, 2);
+    EXPECT_EQ(topology.Components, 2);
+    EXPECT_EQ(topology.BoundaryLoops, 2);
+    EXPECT_EQ(topology.EulerCharacteristic, 2);
+  }
+  EXPECT_EQ(remesh.DroppedFragments, 1);
+  EXPECT_EQ(remesh.FilledHoles, 0);
+  EXPECT_EQ(remesh.Triangles.size(), 32u + 1u);
+  EXPECT_EQ(std::count(remesh.SiteIds.begin(), remesh.SiteIds.end(), 25), 0);
+  EXPECT_EQ(std::count(remesh.SiteIds.begin(), remesh.SiteIds.end(), 28), 1);
 }
 
 TEST(RestrictedVoronoi, RemeshFlipsThinTrianglesButNotFeatureEdges)
