@@ -1,11 +1,13 @@
 #include "cvtSurfaceMesh.h"
 
 #include "cvtEdgeTable.h"
+#include "cvtGeometry.h"
 #include "cvtSampling.h"
 #include "cvtUnionFind.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -121,6 +123,261 @@ std::string CheckSurfaceMesh(const SurfaceMesh& mesh)
   return largest > 0.0 ? std::string() : "the density array is zero everywhere";
 }
 
+/// A copy of point p (coordinates, density, source id) at the end of the mesh's points.
+int CopyPoint(SurfaceMesh& mesh, int p)
+{
+  const int copy = mesh.NumberOfPoints();
+  mesh.Points.insert(mesh.Points.end(), mesh.Point(p), mesh.Point(p) + 3);
+  if (!mesh.Density.empty())
+  {
+    mesh.Density.push_back(mesh.Density[p]);
+  }
+  mesh.SourceIds.push_back(mesh.SourceIds[p]);
+  return copy;
+}
+
+/// The sheet of each triangle `on` an edge (a, b) of more than two: in order round the edge,
+/// neighbours are paired so that each pair traverses the edge both ways (an orientable sheet
+/// through it), of the two ways to pair them the one with narrower wedges; when orientations
+/// do not alternate round the edge (before the orientation repair), neighbours pair anyway. An
+/// odd triangle out is a sheet of its own.
+std::vector<int> SheetsRoundEdge(const SurfaceMesh& mesh, int a, int b, const std::vector<int>& on)
+{
+  const double* origin = mesh.Point(a);
+  double axis[3], u[3] = { 0, 0, 0 }, v[3] = { 0, 0, 0 };
+  for (int k = 0; k < 3; ++k)
+  {
+    axis[k] = mesh.Point(b)[k] - origin[k];
+  }
+  const double length = std::sqrt(Dot(axis, axis));
+  for (double& x : axis)
+  {
+    x /= length;
+  }
+  const size_t n = on.size();
+  std::vector<std::pair<double, int>> order; // angle round the edge, index in `on`
+  for (size_t i = 0; i < n; ++i)
+  {
+    const auto& t = mesh.Triangles[on[i]];
+    const int c = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+    double w[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      w[k] = mesh.Point(c)[k] - origin[k];
+    }
+    const double along = Dot(w, axis);
+    for (int k = 0; k < 3; ++k)
+    {
+      w[k] -= along * axis[k];
+    }
+    if (i == 0)
+    {
+      const double norm = std::sqrt(Dot(w, w));
+      for (int k = 0; k < 3; ++k)
+      {
+        u[k] = w[k] / norm;
+      }
+      Cross(axis, u, v);
+    }
+    order.emplace_back(std::atan2(Dot(w, v), Dot(w, u)), static_cast<int>(i));
+  }
+  std::sort(order.begin(), order.end());
+  const auto forward = [&](int i)
+  {
+    const auto& t = mesh.Triangles[on[i]];
+    for (int k = 0; k < 3; ++k)
+    {
+      if (t[k] == a && t[(k + 1) % 3] == b)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  const double twoPi = 2.0 * std::acos(-1.0);
+  std::vector<int> sheet(n);
+  bool bestAlternates = false;
+  double bestWedge = std::numeric_limits<double>::infinity();
+  for (size_t start : { 0u, 1u })
+  {
+    bool alternates = true;
+    double wedge = 0.0;
+    for (size_t k = 0; 2 * k + 1 < n; ++k)
+    {
+      const auto& first = order[(start + 2 * k) % n];
+      const auto& second = order[(start + 2 * k + 1) % n];
+      alternates = alternates && forward(first.second) != forward(second.second);
+      wedge += std::fmod(second.first - first.first + twoPi, twoPi);
+    }
+    if ((alternates && !bestAlternates) || (alternates == bestAlternates && wedge < bestWedge))
+    {
+      bestAlternates = alternates;
+      bestWedge = wedge;
+      for (size_t k = 0; k < n; ++k)
+      {
+        // Pairs (start + 2k, start + 2k + 1); an odd one out (index start - 1) alone.
+        sheet[order[(start + k) % n].second] = static_cast<int>(k / 2);
+      }
+    }
+  }
+  return sheet;
+}
+
+/// Splits the edges of more than two triangles. Round each end point p of such an edge, the
+/// triangles fall into fans joined across edges (p, x) of exactly two triangles, and across the
+/// crowded edge only within a sheet (SheetsRoundEdge); each fan but the first gets its own copy
+/// of p, so each sheet goes on through the edge and stays joined to the rest of its surface.
+/// Where the sheets' fans meet elsewhere round both ends (a surface that touches itself along
+/// the edge), the triangles beyond the first pair get their own copies of the edge's points.
+/// Returns how many edges were split.
+int SplitCrowdedEdges(SurfaceMesh& mesh, const EdgeTable& edges)
+{
+  std::vector<std::uint64_t> crowded;
+  std::vector<char> onCrowded(mesh.NumberOfPoints(), 0);
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
+  {
+    if (edges.Edge(e).size() > 2)
+    {
+      const std::uint64_t key = edges.Edge(e).Key();
+      crowded.push_back(key);
+      onCrowded[key >> 32] = onCrowded[key & 0xffffffffu] = 1;
+    }
+  }
+  if (crowded.empty())
+  {
+    return 0;
+  }
+  // The triangles round each end point of a crowded edge (and round its copies).
+  std::unordered_map<int, std::vector<int>> star;
+  for (int t = 0; t < mesh.NumberOfTriangles(); ++t)
+  {
+    for (int p : mesh.Triangles[t])
+    {
+      if (onCrowded[p])
+      {
+        star[p].push_back(t);
+      }
+    }
+  }
+  int split = 0;
+  for (std::uint64_t key : crowded)
+  {
+    const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+    const auto onEdge = [&](int t)
+    {
+      const auto& tri = mesh.Triangles[t];
+      return std::count(tri.begin(), tri.end(), a) && std::count(tri.begin(), tri.end(), b);
+    };
+    std::vector<int> on; // the triangles that still have this edge
+    for (int t : star[a])
+    {
+      if (onEdge(t))
+      {
+        on.push_back(t);
+      }
+    }
+    if (on.size() <= 2)
+    {
+      continue;
+    }
+    const std::vector<int> sheet = SheetsRoundEdge(mesh, a, b, on);
+    std::unordered_map<int, int> sheetOf;
+    for (size_t i = 0; i < on.size(); ++i)
+    {
+      sheetOf[on[i]] = sheet[i];
+    }
+    for (int p : { a, b })
+    {
+      const int q = p == a ? b : a;
+      std::vector<int>& around = star[p];
+      // Triangles that a split of another edge gave copies of p are no longer round it.
+      around.erase(std::remove_if(around.begin(), around.end(),
+                     [&](int t)
+                     {
+                       const auto& tri = mesh.Triangles[t];
+                       return std::find(tri.begin(), tri.end(), p) == tri.end();
+                     }),
+        around.end());
+      UnionFind fans(around.size());
+      std::unordered_map<int, std::vector<int>> byOtherEnd; // x -> triangles on edge (p, x)
+      for (size_t i = 0; i < around.size(); ++i)
+      {
+        for (int x : mesh.Triangles[around[i]])
+        {
+          if (x != p)
+          {
+            byOtherEnd[x].push_back(static_cast<int>(i));
+          }
+        }
+      }
+      for (const auto& entry : byOtherEnd)
+      {
+        const std::vector<int>& uses = entry.second;
+        for (size_t i = 0; i < uses.size(); ++i)
+        {
+          for (size_t j = i + 1; j < uses.size(); ++j)
+          {
+            if (entry.first == q ? sheetOf[around[uses[i]]] == sheetOf[around[uses[j]]]
+                                 : uses.size() == 2)
+            {
+              fans.Join(uses[i], uses[j]);
+            }
+          }
+        }
+      }
+      const int first = fans.Find(
+        static_cast<int>(std::find(around.begin(), around.end(), on[0]) - around.begin()));
+      std::unordered_map<int, int> copyOfFan;
+      std::vector<int> stays;
+      for (size_t i = 0; i < around.size(); ++i)
+      {
+        const int fan = fans.Find(static_cast<int>(i));
+        if (fan == first)
+        {
+          stays.push_back(around[i]);
+          continue;
+        }
+        auto found = copyOfFan.emplace(fan, -1);
+        if (found.second)
+        {
+          found.first->second = CopyPoint(mesh, p);
+        }
+        auto& tri = mesh.Triangles[around[i]];
+        *std::find(tri.begin(), tri.end(), p) = found.first->second;
+        star[found.first->second].push_back(around[i]);
+      }
+      around.swap(stays);
+    }
+    // Sheets whose fans meet round both ends: the triangles beyond the first pair left on the
+    // edge get their own copies of its points.
+    std::vector<int> left;
+    for (int t : on)
+    {
+      if (onEdge(t))
+      {
+        left.push_back(t);
+      }
+    }
+    if (left.size() > 2)
+    {
+      size_t mate = 1;
+      for (size_t k = 1; k < left.size(); ++k)
+      {
+        mate = sheetOf[left[k]] == sheetOf[left[0]] ? k : mate;
+      }
+      for (size_t k = 1; k < left.size(); ++k)
+      {
+        for (int& p : mesh.Triangles[left[k]])
+        {
+          p = k != mate && (p == a || p == b) ? CopyPoint(mesh, p) : p;
+        }
+      }
+    }
+    ++split;
+  }
+  return split;
+}
+
 std::vector<int> SplitPinchedPoints(int numberOfPoints, std::vector<std::array<int, 3>>& triangles)
 {
   // Corners (triangle, point) of the two triangles of each edge are joined at the edge's end
@@ -224,82 +481,13 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   {
     return "the mesh has no triangle of positive area";
   }
-  // Non-manifold edges: the first triangle on the edge keeps it with the first one that agrees
-  // with its orientation (else the second); the others get their own copies of its two points.
+  // Non-manifold edges: their triangles are paired into sheets, each sheet beyond the first
+  // with its own copies of the edge's points (SplitCrowdedEdges).
   EdgeTable edges(mesh.Triangles);
+  report.SplitEdges = SplitCrowdedEdges(mesh, edges);
+  if (report.SplitEdges > 0)
   {
-    std::vector<std::uint64_t> crowded;
-    for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
-    {
-      if (edges.Edge(e).size() > 2)
-      {
-        crowded.push_back(edges.Edge(e).Key());
-      }
-    }
-    for (std::uint64_t key : crowded)
-    {
-      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
-      std::vector<int> on; // the triangles that still have this edge
-      for (const EdgeUse& use : edges.Find(key))
-      {
-        const auto& t = mesh.Triangles[use.Triangle];
-        if (std::count(t.begin(), t.end(), a) && std::count(t.begin(), t.end(), b))
-        {
-          on.push_back(use.Triangle);
-        }
-      }
-      if (on.size() <= 2)
-      {
-        continue;
-      }
-      const auto forward = [&](int t)
-      {
-        const auto& tri = mesh.Triangles[t];
-        for (int k = 0; k < 3; ++k)
-        {
-          if (tri[k] == a && tri[(k + 1) % 3] == b)
-          {
-            return true;
-          }
-        }
-        return false;
-      };
-      size_t partner = 1;
-      for (size_t k = 1; k < on.size(); ++k)
-      {
-        if (forward(on[k]) != forward(on[0]))
-        {
-          partner = k;
-          break;
-        }
-      }
-      for (size_t k = 1; k < on.size(); ++k)
-      {
-        if (k == partner)
-        {
-          continue;
-        }
-        for (int& p : mesh.Triangles[on[k]])
-        {
-          if (p == a || p == b)
-          {
-            const int copy = mesh.NumberOfPoints();
-            mesh.Points.insert(mesh.Points.end(), mesh.Point(p), mesh.Point(p) + 3);
-            if (!mesh.Density.empty())
-            {
-              mesh.Density.push_back(mesh.Density[p]);
-            }
-            mesh.SourceIds.push_back(mesh.SourceIds[p]);
-            p = copy;
-          }
-        }
-      }
-      ++report.SplitEdges;
-    }
-    if (report.SplitEdges > 0)
-    {
-      edges = EdgeTable(mesh.Triangles);
-    }
+    edges = EdgeTable(mesh.Triangles);
   }
   // Consistent orientation, component by component (breadth-first over edges).
   const int triangleCount = mesh.NumberOfTriangles();

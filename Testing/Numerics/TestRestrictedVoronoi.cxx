@@ -1176,6 +1176,28 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
   EXPECT_EQ(finParts.BoundaryLoops, 2);
   EXPECT_EQ(fin.SourceIds[5] + fin.SourceIds[6], 1); // the copies of points 0 and 1
 
+  // Two tetrahedra sharing an edge (four triangles on it): each pair of triangles through it
+  // stays a sheet joined to the rest of its surface. Before, the two triangles beyond the first
+  // pair were cut out whole: two single-triangle parts and two holes.
+  cvt::SurfaceMesh touching;
+  touching.Points = { 0, 0, 0, 1, 0, 0, 0.5, 1, 0.2, 0.5, 0.3, 1, 0.5, -1, 0.2, 0.5, -0.3, -1 };
+  for (const std::array<int, 4>& tetrahedron :
+    { std::array<int, 4>{ 0, 1, 2, 3 }, std::array<int, 4>{ 0, 1, 4, 5 } })
+  {
+    const auto& v = tetrahedron;
+    touching.Triangles.insert(touching.Triangles.end(),
+      { { v[0], v[2], v[1] }, { v[0], v[1], v[3] }, { v[1], v[2], v[3] }, { v[0], v[3], v[2] } });
+  }
+  EXPECT_EQ(cvt::RepairSurfaceMesh(touching, report), "");
+  EXPECT_EQ(report.SplitEdges, 1);
+  EXPECT_EQ(touching.NumberOfTriangles(), 8);
+  const cvt::MeshTopology sheets =
+    cvt::ComputeMeshTopology(touching.NumberOfPoints(), touching.Triangles);
+  EXPECT_EQ(sheets.BoundaryLoops, 0);
+  EXPECT_EQ(sheets.EulerCharacteristic, 2 * sheets.Components); // closed spheres
+  EXPECT_LE(sheets.Components, 2);
+  EXPECT_EQ(sheets.Genus, 0);
+
   // A Moebius strip.
   cvt::SurfaceMesh strip;
   const int n = 12;
