@@ -569,12 +569,7 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   const std::vector<int> copied = SplitPinchedPoints(mesh.NumberOfPoints(), mesh.Triangles);
   for (int p : copied)
   {
-    mesh.Points.insert(mesh.Points.end(), mesh.Point(p), mesh.Point(p) + 3);
-    if (!mesh.Density.empty())
-    {
-      mesh.Density.push_back(mesh.Density[p]);
-    }
-    mesh.SourceIds.push_back(mesh.SourceIds[p]);
+    CopyPoint(mesh, p); // numbered as SplitPinchedPoints expects: in order after the others
   }
   report.SplitPoints = static_cast<int>(copied.size());
   // Unused points.
