@@ -1177,8 +1177,6 @@ int SeparateCoincidentVertices(Remesh& remesh)
   return moved;
 }
 
-/// The remesh's triangles and vertices from the dual, before any shaping (BuildRemesh's steps up
-/// to the flips); `dualOf` gets the dual vertex of each remesh vertex.
 /// Drops the pieces (joined by edges) of at most MaximumFragment triangles whose part of the
 /// input also holds a larger piece: what the dropped non-manifold triangles around a few cells
 /// left of them (a lone triangle, or two pinched at their vertices), which would give the
@@ -1190,17 +1188,13 @@ int DropFragments(const RestrictedDual& dual, std::vector<std::array<int, 3>>& t
 {
   constexpr size_t MaximumFragment = 2;
   UnionFind pieces(triangles.size());
-  std::unordered_map<std::uint64_t, int> onEdge; // undirected edge -> a triangle on it
-  for (size_t k = 0; k < triangles.size(); ++k)
+  const EdgeTable edges(triangles);
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
   {
-    for (int e = 0; e < 3; ++e)
+    const EdgeTable::Range uses = edges.Edge(e);
+    for (auto use = uses.begin() + 1; use != uses.end(); ++use)
     {
-      const int a = triangles[k][e], b = triangles[k][(e + 1) % 3];
-      const auto found = onEdge.emplace(DirectedKey(std::min(a, b), std::max(a, b)), k);
-      if (!found.second)
-      {
-        pieces.Join(static_cast<int>(k), found.first->second);
-      }
+      pieces.Join(uses.begin()->Triangle, use->Triangle);
     }
   }
   std::vector<size_t> size(triangles.size(), 0);
@@ -1236,6 +1230,8 @@ int DropFragments(const RestrictedDual& dual, std::vector<std::array<int, 3>>& t
   return static_cast<int>(dropped.size());
 }
 
+/// The remesh's triangles and vertices from the dual, before any shaping (BuildRemesh's steps up
+/// to the flips); `dualOf` gets the dual vertex of each remesh vertex.
 Remesh ConnectRemesh(
   const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole, std::vector<int>& dualOf)
 {
