@@ -150,30 +150,145 @@ vtkImageData* vtkCVTSceneRenderer::KeepPicture(vtkUnsignedCharArray* pixels, int
 //------------------------------------------------------------------------------
 namespace
 {
-/// Points a camera at a mesh of these bounds, any shape and size: mostly along the box's
-/// thinnest axis (the largest face in view), tilted so relief shows, the longest axis across
-/// the (landscape) picture; the distance fits the box's bounding sphere in the view angle, as
-/// vtkRenderer::ResetCamera does. `direction` receives the unit vector towards the camera.
-void FitCamera(const double bounds[6], vtkCamera* camera, double direction[3])
+/// The principal axes of a mesh's surface, longest first (unit columns of `axes`), from the
+/// area-weighted second moments of its polygons (fans), and the middle of its extent along them.
+/// A curved or tilted open sheet is thinnest along its best-fit plane's normal, which an
+/// axis-aligned box misses. The thinnest axis points the way the surface's normals mostly face,
+/// so an open sheet is seen from its front. False when the polygons have no area.
+bool PrincipalAxes(vtkPolyData* mesh, double axes[3][3], double center[3], double extent[3])
 {
-  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  // Moments about the box's middle: no cancellation far from the origin.
+  const double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
     0.5 * (bounds[4] + bounds[5]) };
-  int axes[3] = { 0, 1, 2 }; // thinnest, middle, longest
-  std::sort(axes, axes + 3,
-    [&bounds](int a, int b)
-    { return bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * b + 1] - bounds[2 * b]; });
-  double up[3] = { 0.0, 0.0, 0.0 };
-  std::fill(direction, direction + 3, 0.0);
-  direction[axes[0]] = 1.0;
-  direction[axes[1]] = -0.6;
-  up[axes[1]] = 1.0;
-  vtkMath::Normalize(direction);
-  double radius = 0.0;
+  double area = 0.0, first[3] = { 0.0, 0.0, 0.0 }, second[3][3] = {}, normals[3] = {};
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType cellSize = 0;
+  const vtkIdType* cell = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(cellSize, cell);)
+  {
+    for (vtkIdType corner = 1; corner + 1 < cellSize; ++corner)
+    {
+      double x[3][3], e1[3], e2[3], normal[3], sum[3];
+      const vtkIdType ids[3] = { cell[0], cell[corner], cell[corner + 1] };
+      for (int v = 0; v < 3; ++v)
+      {
+        mesh->GetPoint(ids[v], x[v]);
+        vtkMath::Subtract(x[v], origin, x[v]);
+      }
+      vtkMath::Subtract(x[1], x[0], e1);
+      vtkMath::Subtract(x[2], x[0], e2);
+      vtkMath::Cross(e1, e2, normal);
+      const double a = 0.5 * vtkMath::Norm(normal);
+      area += a;
+      for (int i = 0; i < 3; ++i)
+      {
+        normals[i] += 0.5 * normal[i];
+        sum[i] = x[0][i] + x[1][i] + x[2][i];
+        first[i] += a * sum[i] / 3.0;
+      }
+      // The integral of x x^T over a triangle: A / 12 (sum of v v^T + s s^T), s = sum of v.
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          double corners = sum[i] * sum[j];
+          for (int v = 0; v < 3; ++v)
+          {
+            corners += x[v][i] * x[v][j];
+          }
+          second[i][j] += a / 12.0 * corners;
+        }
+      }
+    }
+  }
+  if (!(area > 0.0))
+  {
+    return false;
+  }
+  double covariance[3][3], eigenvalues[3], eigenvectors[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      covariance[i][j] = second[i][j] / area - first[i] * first[j] / (area * area);
+    }
+  }
+  double* rows[3] = { covariance[0], covariance[1], covariance[2] };
+  double* vectorRows[3] = { eigenvectors[0], eigenvectors[1], eigenvectors[2] };
+  vtkMath::Jacobi(rows, eigenvalues, vectorRows); // decreasing, vectors in columns
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      axes[axis][k] = eigenvectors[k][axis];
+    }
+  }
+  if (vtkMath::Dot(axes[2], normals) < 0.0)
+  {
+    vtkMath::MultiplyScalar(axes[2], -1.0);
+  }
+  // The extent along each axis of the points the polygons use.
+  double low[3], high[3];
+  std::fill(low, low + 3, VTK_DOUBLE_MAX);
+  std::fill(high, high + 3, -VTK_DOUBLE_MAX);
+  for (polys->InitTraversal(); polys->GetNextCell(cellSize, cell);)
+  {
+    for (vtkIdType corner = 0; corner < cellSize; ++corner)
+    {
+      double x[3];
+      mesh->GetPoint(cell[corner], x);
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        const double along = vtkMath::Dot(x, axes[axis]);
+        low[axis] = std::min(low[axis], along);
+        high[axis] = std::max(high[axis], along);
+      }
+    }
+  }
   for (int k = 0; k < 3; ++k)
   {
-    radius += 0.25 * (bounds[2 * k + 1] - bounds[2 * k]) * (bounds[2 * k + 1] - bounds[2 * k]);
+    center[k] = 0.0;
   }
-  radius = std::max(std::sqrt(radius), 1e-12);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    extent[axis] = high[axis] - low[axis];
+    for (int k = 0; k < 3; ++k)
+    {
+      center[k] += 0.5 * (low[axis] + high[axis]) * axes[axis][k];
+    }
+  }
+  return true;
+}
+
+/// Points a camera at a mesh of any shape, size and orientation: mostly along its thinnest
+/// principal axis (the largest face in view), tilted so relief shows, the longest axis across
+/// the (landscape) picture; the distance fits the bounding sphere of its extent along the axes
+/// in the view angle, as vtkRenderer::ResetCamera does. `direction` receives the unit vector
+/// towards the camera.
+void FitCamera(vtkPolyData* mesh, vtkCamera* camera, double direction[3])
+{
+  double axes[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, center[3], extent[3];
+  if (!PrincipalAxes(mesh, axes, center, extent))
+  {
+    // No area (every polygon degenerate): the bounding box, along the coordinate axes.
+    double bounds[6];
+    mesh->GetBounds(bounds);
+    for (int k = 0; k < 3; ++k)
+    {
+      center[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+      extent[k] = bounds[2 * k + 1] - bounds[2 * k];
+    }
+  }
+  double up[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    direction[k] = axes[2][k] - 0.6 * axes[1][k];
+    up[k] = axes[1][k];
+  }
+  vtkMath::Normalize(direction);
+  const double radius = std::max(0.5 * vtkMath::Norm(extent), 1e-12);
   const double distance =
     radius / std::sin(0.5 * vtkMath::RadiansFromDegrees(camera->GetViewAngle()));
   camera->SetFocalPoint(center);
@@ -283,10 +398,9 @@ vtkImageData* vtkCVTSceneRenderer::RenderMesh(vtkPolyData* mesh)
     return nullptr;
   }
   const int width = this->Size, height = (this->Size * 3) / 4;
-  double bounds[6], direction[3];
-  mesh->GetBounds(bounds);
+  double direction[3];
   vtkNew<vtkCamera> camera;
-  FitCamera(bounds, camera, direction);
+  FitCamera(mesh, camera, direction);
   vtkMatrix4x4* toView =
     camera->GetCompositeProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0);
   const vtkIdType pointCount = mesh->GetNumberOfPoints();

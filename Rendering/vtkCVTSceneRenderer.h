@@ -58,8 +58,9 @@ public:
   vtkImageData* Render(vtkImageData* labels, vtkPolyData* sites);
 
   /**
-   * Render a surface mesh (a remesh) of any shape and size, seen mostly along the thinnest axis
-   * of its bounding box and tilted, the longest axis across, each triangle in its own colour
+   * Render a surface mesh (a remesh) of any shape, size and orientation, seen mostly along its
+   * thinnest principal axis (an open sheet from the side its normals face) and tilted, the
+   * longest axis across, each triangle in its own colour
    * (lit from the camera) with its edges drawn, into an RGB image of Size x 3/4 Size (a
    * z-buffer, drawn on the CPU). nullptr with a message in GetLastError() when the mesh has no
    * polygons. The picture belongs to this renderer, as with Render.

@@ -8,6 +8,7 @@
 #include "vtkImageData.h"
 #include "vtkImageDifference.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -153,6 +155,75 @@ TEST(RegressionImage, PictureOfBadLabelsIsRefused)
   EXPECT_EQ(scene->Render(labels, nullptr), nullptr);
   EXPECT_NE(scene->GetLastError().find("shorter than the image"), std::string::npos);
   EXPECT_EQ(scene->Render(nullptr, nullptr), nullptr);
+}
+
+// A flat 3 x 2 sheet tilted so that its normal is (1, 1, 1): its bounding box is nearly a cube
+// and says nothing of which way it faces (a box-aligned camera saw it nearly edge-on, a sixth
+// of the picture). Fitted to the sheet's principal axes, the camera sees it face on, large.
+TEST(RegressionImage, MeshPictureFacesATiltedSheet)
+{
+  const double normal[3] = { 1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0) };
+  const double along[3] = { 1.0 / std::sqrt(2.0), -1.0 / std::sqrt(2.0), 0.0 };
+  double across[3];
+  vtkMath::Cross(normal, along, across);
+  const int columns = 12, rows = 8;
+  vtkNew<vtkPoints> points;
+  for (int j = 0; j <= rows; ++j)
+  {
+    for (int i = 0; i <= columns; ++i)
+    {
+      const double u = 3.0 * i / columns, v = 2.0 * j / rows;
+      points->InsertNextPoint(
+        u * along[0] + v * across[0], u * along[1] + v * across[1], u * along[2] + v * across[2]);
+    }
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (int j = 0; j < rows; ++j)
+  {
+    for (int i = 0; i < columns; ++i)
+    {
+      const vtkIdType corner = i + j * (columns + 1);
+      const vtkIdType first[3] = { corner, corner + 1, corner + columns + 2 };
+      const vtkIdType second[3] = { corner, corner + columns + 2, corner + columns + 1 };
+      triangles->InsertNextCell(3, first);
+      triangles->InsertNextCell(3, second);
+    }
+  }
+  vtkNew<vtkPolyData> sheet;
+  sheet->SetPoints(points);
+  sheet->SetPolys(triangles);
+
+  vtkNew<vtkCVTSceneRenderer> scene;
+  scene->SetSize(200);
+  vtkSmartPointer<vtkImageData> picture = scene->RenderMesh(sheet);
+  ASSERT_NE(picture, nullptr) << scene->GetLastError();
+  int dims[3];
+  picture->GetDimensions(dims);
+  const auto* rgb = static_cast<unsigned char*>(picture->GetScalarPointer());
+  int covered = 0, xMin = dims[0], xMax = -1, yMin = dims[1], yMax = -1;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      const unsigned char* p = rgb + 3 * (x + y * dims[0]);
+      if (p[0] != 255 || p[1] != 255 || p[2] != 255)
+      {
+        ++covered;
+        xMin = std::min(xMin, x);
+        xMax = std::max(xMax, x);
+        yMin = std::min(yMin, y);
+        yMax = std::max(yMax, y);
+      }
+    }
+  }
+  // Face on (tilted by the camera's 31 degrees): about 3 x 1.7 of a 2.9-high view, nearly half
+  // the picture, the long side across; and framed, clear of the borders.
+  EXPECT_GT(covered, dims[0] * dims[1] / 3);
+  EXPECT_GT(xMax - xMin, 2 * (yMax - yMin) * 3 / 4);
+  EXPECT_GT(xMin, 0);
+  EXPECT_LT(xMax, dims[0] - 1);
+  EXPECT_GT(yMin, 0);
+  EXPECT_LT(yMax, dims[1] - 1);
 }
 
 // A box seen from above and in front, drawn on the CPU: framed whole, edges drawn, and only the
