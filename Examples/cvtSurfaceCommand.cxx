@@ -165,11 +165,12 @@ int RunRemesh(const Options& options)
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
               << Field(remesh, "DroppedFragments") << " fragments dropped, "
-              << Field(remesh, "SplitVertices") << " pinched vertices split, "
-              << Field(remesh, "SeparatedVertices") << " coincident vertices separated, "
-              << Field(remesh, "FlippedEdges") << " edges flipped for angles, "
-              << Field(remesh, "ValenceFlips") << " for valence, " << Field(remesh, "MovedVertices")
-              << " vertices moved, " << Field(remesh, "CollapsedEdges") << " edges collapsed, "
+              << Field(remesh, "OpenedHoles") << " holes opened, " << Field(remesh, "SplitVertices")
+              << " pinched vertices split, " << Field(remesh, "SeparatedVertices")
+              << " coincident vertices separated, " << Field(remesh, "FlippedEdges")
+              << " edges flipped for angles, " << Field(remesh, "ValenceFlips") << " for valence, "
+              << Field(remesh, "MovedVertices") << " vertices moved, "
+              << Field(remesh, "CollapsedEdges") << " edges collapsed, "
               << Field(remesh, "FittedVertices") << " vertices moved towards tips)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"

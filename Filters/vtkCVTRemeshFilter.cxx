@@ -260,6 +260,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
   }
   // Only the chosen dual is shaped into a remesh (most of the cost of one).
   best.Remesh = cvt::BuildRemesh(best.Dual, input.Loops.size(), 8, &mesh);
+  cvt::OpenCoveredHoles(best.Remesh, mesh, input.Loops);
   best.Topology =
     cvt::ComputeMeshTopology(static_cast<int>(best.Remesh.SiteIds.size()), best.Remesh.Triangles);
   best.Mismatch = TopologyMismatch(best.Topology, input);
@@ -487,6 +488,7 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
   cvtvtk::AddFieldValue(fields, "RemovedTriangles", remesh.RemovedTriangles);
   cvtvtk::AddFieldValue(fields, "FilledHoles", remesh.FilledHoles);
   cvtvtk::AddFieldValue(fields, "DroppedFragments", remesh.DroppedFragments);
+  cvtvtk::AddFieldValue(fields, "OpenedHoles", remesh.OpenedHoles);
   cvtvtk::AddFieldValue(fields, "SplitVertices", remesh.SplitVertices);
   cvtvtk::AddFieldValue(fields, "FlippedEdges", remesh.FlippedEdges);
   cvtvtk::AddFieldValue(fields, "ValenceFlips", remesh.ValenceFlips);

@@ -1507,6 +1507,106 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
   return remesh;
 }
 
+int OpenCoveredHoles(
+  Remesh& remesh, const SurfaceMesh& surface, const std::vector<std::vector<int>>& inputLoops)
+{
+  const int vertexCount = static_cast<int>(remesh.SiteIds.size());
+  int missing = static_cast<int>(inputLoops.size()) -
+    ComputeMeshTopology(vertexCount, remesh.Triangles).BoundaryLoops;
+  if (missing <= 0 || remesh.Triangles.empty())
+  {
+    return 0;
+  }
+  const auto vertex = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
+  double edgeLength = 0.0;
+  for (const std::array<int, 3>& t : remesh.Triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edgeLength += std::sqrt(Distance2(vertex(t[k]), vertex(t[(k + 1) % 3])));
+    }
+  }
+  edgeLength /= 3.0 * static_cast<double>(remesh.Triangles.size());
+  // Vertices that may not be a corner of an opened triangle: the border's, and (once taken)
+  // the opened triangles' own, so that each opening is one new loop, never a pinch.
+  std::vector<char> taken = BorderVertices(remesh);
+  std::vector<int> borderVertices;
+  for (int v = 0; v < vertexCount; ++v)
+  {
+    if (taken[static_cast<size_t>(v)])
+    {
+      borderVertices.push_back(v);
+    }
+  }
+  std::vector<char> opened(remesh.Triangles.size(), 0);
+  for (const std::vector<int>& loop : inputLoops)
+  {
+    if (missing == 0 || loop.empty())
+    {
+      break;
+    }
+    // A hole the remesh keeps (or merged with another) has border vertices on it.
+    bool covered = true;
+    double middle[3] = { 0.0, 0.0, 0.0 };
+    for (int p : loop)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        middle[k] += surface.Point(p)[k] / static_cast<double>(loop.size());
+      }
+      for (int v : borderVertices)
+      {
+        covered = covered && Distance2(surface.Point(p), vertex(v)) > edgeLength * edgeLength;
+      }
+    }
+    if (!covered)
+    {
+      continue;
+    }
+    int nearest = -1;
+    double nearestDistance = std::numeric_limits<double>::max();
+    for (size_t t = 0; t < remesh.Triangles.size(); ++t)
+    {
+      const std::array<int, 3>& tri = remesh.Triangles[t];
+      if (taken[static_cast<size_t>(tri[0])] || taken[static_cast<size_t>(tri[1])] ||
+        taken[static_cast<size_t>(tri[2])])
+      {
+        continue;
+      }
+      double q[3], weights[3];
+      ClosestPointOnTriangle(middle, vertex(tri[0]), vertex(tri[1]), vertex(tri[2]), q, weights);
+      const double d = Distance2(middle, q);
+      if (d < nearestDistance)
+      {
+        nearestDistance = d;
+        nearest = static_cast<int>(t);
+      }
+    }
+    // Only a triangle at the hole: one across the surface would cut a hole elsewhere.
+    if (nearest < 0 || nearestDistance > edgeLength * edgeLength)
+    {
+      continue;
+    }
+    opened[static_cast<size_t>(nearest)] = 1;
+    for (int v : remesh.Triangles[static_cast<size_t>(nearest)])
+    {
+      taken[static_cast<size_t>(v)] = 1;
+    }
+    --missing;
+    ++remesh.OpenedHoles;
+  }
+  size_t kept = 0;
+  for (size_t t = 0; t < remesh.Triangles.size(); ++t)
+  {
+    if (!opened[t])
+    {
+      remesh.Triangles[kept++] = remesh.Triangles[t];
+    }
+  }
+  remesh.Triangles.resize(kept);
+  return remesh.OpenedHoles;
+}
+
 MeshTopology RemeshTopology(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
 {
   std::vector<int> dualOf;

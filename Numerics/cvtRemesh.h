@@ -31,6 +31,7 @@ struct Remesh
   int CollapsedEdges = 0;    // edges of thin triangles collapsed (a vertex fewer each)
   int SeparatedVertices = 0; // vertices at one place moved apart (split copies)
   int FittedVertices = 0;    // free vertices moved towards input tips and ridges the remesh cut off
+  int OpenedHoles = 0;       // triangles taken out where the input has a hole the cells covered
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
@@ -53,6 +54,17 @@ struct Remesh
 /// thinner than the cells), where that brings them closer without a corner under 30 degrees.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
+
+/// Holes of the input that the remesh covers (smaller than its cells: no border vertex of the
+/// remesh within an edge length of them) are opened, one remesh triangle each, the one nearest
+/// to the hole's middle whose corners are off the border and off the other opened triangles,
+/// while the remesh has fewer boundary loops than the input. The remesh's hole is then a
+/// triangle round the input's (its border a third of an edge off the hole, not on it), which
+/// keeps the input's number of boundary loops without the slivers that vertices on a hole
+/// smaller than the cells would make. `inputLoops`: the input's boundary loops, as points of
+/// `surface`. Returns the number of holes opened (also in OpenedHoles).
+CVTNUMERICS_EXPORT int OpenCoveredHoles(
+  Remesh& remesh, const SurfaceMesh& surface, const std::vector<std::vector<int>>& inputLoops);
 
 /// The topology of BuildRemesh's remesh of `dual` without building it whole: its triangles and
 /// split vertices without the shaping (flips, moves and collapses keep the topology). For

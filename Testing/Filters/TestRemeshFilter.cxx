@@ -11,11 +11,13 @@
 #include "vtkDataArray.h"
 #include "vtkDiskSource.h"
 #include "vtkDoubleArray.h"
+#include "vtkFeatureEdges.h"
 #include "vtkFieldData.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkLinearSubdivisionFilter.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -318,12 +320,13 @@ TEST(RemeshFilter, HolesCloserThanTheCellsStayApartWithAddedSites)
   EXPECT_GT(Field(run.Filter->GetSitesOutput(), "AddedSites"), 0);
 }
 
-TEST(RemeshFilter, HoleFarSmallerThanTheCellsEndsTheRoundsEarly)
+TEST(RemeshFilter, HoleFarSmallerThanTheCellsIsOpenedAsOneTriangle)
 {
   // A sphere with a triangular hole 20 times smaller than its triangles (about 0.006 across)
   // remeshed with 100 sites (cells about 0.35 across): added sites cannot keep such a hole, so
-  // the rounds stop when they stop gaining (5 rounds), not after all 16, and the warning says
-  // the topology differs.
+  // the rounds stop when they stop gaining (5 rounds), not after all 16. The remesh then takes
+  // out its triangle at the hole: one boundary loop as the input, and no sliver (sites on a rim
+  // that small would make corners of a degree).
   vtkSmartPointer<vtkPolyData> sphere = Sphere();
   vtkNew<vtkPoints> points;
   points->DeepCopy(sphere->GetPoints());
@@ -373,12 +376,45 @@ TEST(RemeshFilter, HoleFarSmallerThanTheCellsEndsTheRoundsEarly)
   input->SetPolys(triangles);
   RemeshRun run(input, 100, 40);
   ASSERT_TRUE(run.Status) << run.Log->Errors;
-  EXPECT_EQ(Field(run.Remesh(), "InputBoundaryLoops"), 1);
-  EXPECT_EQ(Field(run.Remesh(), "BoundaryLoops"), 0);
-  EXPECT_NE(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
+  ExpectTopology(run.Remesh(), 1, 0, 1);
+  EXPECT_EQ(Field(run.Remesh(), "OpenedHoles"), 1);
+  EXPECT_EQ(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
+  EXPECT_GT(Field(run.Remesh(), "MinimumAngle"), 25.0);
   vtkPolyData* sites = run.Filter->GetSitesOutput();
   EXPECT_EQ(Field(sites, "AddedSites"), 0);
   EXPECT_EQ(Field(sites, "TopologyRounds"), 5);
+  // The opened triangle is the one round the hole: its three corners within an edge (at most
+  // 1.5 of the remesh's mean edge length, where a neighbour's far corner is about 2) of it.
+  vtkPolyData* remesh = run.Remesh();
+  double edgeLength = 0.0;
+  for (vtkIdType c = 0; c < remesh->GetNumberOfPolys(); ++c)
+  {
+    remesh->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      double a[3], b[3]; // (GetPoint(id) alone returns one buffer for both)
+      remesh->GetPoint(ids->GetId(k), a);
+      remesh->GetPoint(ids->GetId((k + 1) % 3), b);
+      edgeLength += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+    }
+  }
+  edgeLength /= 3.0 * static_cast<double>(remesh->GetNumberOfPolys());
+  sphere->GetCellPoints(holed, ids);
+  double hole[3];
+  sphere->GetPoint(ids->GetId(0), hole);
+  vtkNew<vtkFeatureEdges> border;
+  border->SetInputData(remesh);
+  border->BoundaryEdgesOn();
+  border->FeatureEdgesOff();
+  border->NonManifoldEdgesOff();
+  border->ManifoldEdgesOff();
+  border->Update();
+  ASSERT_EQ(border->GetOutput()->GetNumberOfPoints(), 3);
+  for (vtkIdType p = 0; p < 3; ++p)
+  {
+    EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(border->GetOutput()->GetPoint(p), hole)),
+      1.5 * edgeLength);
+  }
 }
 
 TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)
