@@ -160,7 +160,9 @@ int RunRemesh(const Options& options)
               << "  input topology              " << TopologyText(sites, "Input") << "\n"
               << "  remesh topology             " << TopologyText(remesh, "") << "\n"
               << "  sites added for topology    " << Field(sites, "AddedSites") << " (in "
-              << Field(sites, "TopologyRounds") << " rounds)\n"
+              << Field(sites, "TopologyRounds") << " rounds"
+              << (Field(sites, "AddedSitesSettled") > 0 ? ", settled under their cells' sizes" : "")
+              << ")\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "

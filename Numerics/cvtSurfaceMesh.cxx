@@ -892,4 +892,37 @@ std::vector<double> SampleMeshSites(
   return sites;
 }
 
+std::vector<double> DensityOfCellSizes(
+  const SurfaceMesh& mesh, const std::vector<int>& labels, const std::vector<double>& cellMasses)
+{
+  double meanMass = 0.0;
+  for (double mass : cellMasses)
+  {
+    meanMass += mass / static_cast<double>(cellMasses.size());
+  }
+  std::vector<double> density(static_cast<size_t>(mesh.NumberOfPoints()), 1.0);
+  double meanGiven = 0.0; // the given density's scale is the user's: only its ratios count
+  for (double given : mesh.Density)
+  {
+    meanGiven += given / static_cast<double>(mesh.Density.size());
+  }
+  if (!(meanMass > 0.0) || (!mesh.Density.empty() && !(meanGiven > 0.0)))
+  {
+    return density;
+  }
+  for (size_t p = 0; p < density.size(); ++p)
+  {
+    const int label = p < labels.size() ? labels[p] : -1;
+    if (label < 0 || static_cast<size_t>(label) >= cellMasses.size())
+    {
+      continue;
+    }
+    const double given = mesh.Density.empty() ? 1.0 : mesh.Density[p] / meanGiven;
+    const double ratio =
+      given * meanMass / std::max(cellMasses[static_cast<size_t>(label)], 1e-2 * meanMass);
+    density[p] = std::min(1e4, std::max(1e-4, ratio * ratio));
+  }
+  return density;
+}
+
 } // namespace cvt

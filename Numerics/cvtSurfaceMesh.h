@@ -98,6 +98,15 @@ CVTNUMERICS_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
 CVTNUMERICS_EXPORT std::vector<double> SampleMeshSites(
   const SurfaceMesh& mesh, int count, std::uint64_t seed, const MeshTopology* topology = nullptr);
 
+/// A density under which the cells of sites whose nearest-site labels are `labels` (one per
+/// point of `mesh`, -1: none) and whose masses are `cellMasses` (the integral of the mesh's
+/// density over each cell) already have about the sizes a CVT would give them: per point,
+/// (density / mass of its cell)^2, relative to the mean (a CVT's cells have areas about
+/// proportional to density^-1/2), within a factor of 10^4. Lloyd iterations under it regularise
+/// sites without moving them from regions of small cells to regions of large ones.
+CVTNUMERICS_EXPORT std::vector<double> DensityOfCellSizes(
+  const SurfaceMesh& mesh, const std::vector<int>& labels, const std::vector<double>& cellMasses);
+
 } // namespace cvt
 
 #endif

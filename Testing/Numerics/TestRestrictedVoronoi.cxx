@@ -1242,3 +1242,28 @@ TEST(SurfaceMesh, TopologyCountsGenusAndLoops)
   EXPECT_EQ(t.BoundaryLoops, 0);
   EXPECT_EQ(t.EulerCharacteristic, 0);
 }
+
+TEST(SurfaceMesh, DensityOfCellSizesMakesSmallCellsDense)
+{
+  // Four points in three cells of masses 1, 4 and 0 (an empty cell) and one point in none.
+  // Relative to the mean mass (5/3), the density is (mean / mass)^2: 25/9 in the small cell,
+  // 25/144 in the large one; 1 where no cell or mass tells. A given density counts by its ratio
+  // to its own mean (the cell's area is mass / density): doubling it everywhere changes nothing,
+  // doubling it at one point of the large cell doubles its ratio there.
+  cvt::SurfaceMesh mesh;
+  mesh.Points.assign(15, 0.0);
+  const std::vector<int> labels = { 0, 1, 1, 2, -1 };
+  const std::vector<double> masses = { 1.0, 4.0, 0.0 };
+  const std::vector<double> density = cvt::DensityOfCellSizes(mesh, labels, masses);
+  ASSERT_EQ(density.size(), 5u);
+  EXPECT_NEAR(density[0], 25.0 / 9.0, 1e-12);
+  EXPECT_NEAR(density[1], 25.0 / 144.0, 1e-12);
+  EXPECT_NEAR(density[2], 25.0 / 144.0, 1e-12);
+  EXPECT_NEAR(density[3], 1e4, 1e-9); // an empty cell: as dense as allowed
+  EXPECT_EQ(density[4], 1.0);
+  mesh.Density.assign(5, 2.0);
+  EXPECT_EQ(cvt::DensityOfCellSizes(mesh, labels, masses), density);
+  mesh.Density = { 1.0, 1.0, 2.0, 1.0, 1.0 }; // mean 1.2
+  const std::vector<double> given = cvt::DensityOfCellSizes(mesh, labels, masses);
+  EXPECT_NEAR(given[2] / given[1], 4.0, 1e-12);
+}
