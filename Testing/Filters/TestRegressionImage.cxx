@@ -157,6 +157,44 @@ TEST(RegressionImage, PictureOfBadLabelsIsRefused)
   EXPECT_EQ(scene->Render(nullptr, nullptr), nullptr);
 }
 
+namespace
+{
+/// What a mesh picture shows: its pixels other than the white background, by colour, and the
+/// box round them.
+struct DrawnPixels
+{
+  std::map<std::array<int, 3>, int> Colours; // colour -> pixels
+  int Count = 0, XMin = 0, XMax = -1, YMin = 0, YMax = -1;
+
+  explicit DrawnPixels(vtkImageData* picture)
+  {
+    int dims[3];
+    picture->GetDimensions(dims);
+    this->XMin = dims[0];
+    this->YMin = dims[1];
+    const auto* rgb = static_cast<unsigned char*>(picture->GetScalarPointer());
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x)
+      {
+        const unsigned char* p = rgb + 3 * (x + y * dims[0]);
+        const std::array<int, 3> colour = { p[0], p[1], p[2] };
+        if (colour == std::array<int, 3>{ 255, 255, 255 })
+        {
+          continue;
+        }
+        ++this->Colours[colour];
+        ++this->Count;
+        this->XMin = std::min(this->XMin, x);
+        this->XMax = std::max(this->XMax, x);
+        this->YMin = std::min(this->YMin, y);
+        this->YMax = std::max(this->YMax, y);
+      }
+    }
+  }
+};
+}
+
 // A flat 3 x 2 sheet tilted so that its normal is (1, 1, 1): its bounding box is nearly a cube
 // and says nothing of which way it faces (a box-aligned camera saw it nearly edge-on, a sixth
 // of the picture). Fitted to the sheet's principal axes, the camera sees it face on, large.
@@ -199,31 +237,15 @@ TEST(RegressionImage, MeshPictureFacesATiltedSheet)
   ASSERT_NE(picture, nullptr) << scene->GetLastError();
   int dims[3];
   picture->GetDimensions(dims);
-  const auto* rgb = static_cast<unsigned char*>(picture->GetScalarPointer());
-  int covered = 0, xMin = dims[0], xMax = -1, yMin = dims[1], yMax = -1;
-  for (int y = 0; y < dims[1]; ++y)
-  {
-    for (int x = 0; x < dims[0]; ++x)
-    {
-      const unsigned char* p = rgb + 3 * (x + y * dims[0]);
-      if (p[0] != 255 || p[1] != 255 || p[2] != 255)
-      {
-        ++covered;
-        xMin = std::min(xMin, x);
-        xMax = std::max(xMax, x);
-        yMin = std::min(yMin, y);
-        yMax = std::max(yMax, y);
-      }
-    }
-  }
+  const DrawnPixels drawn(picture);
   // Face on (tilted by the camera's 31 degrees): about 3 x 1.7 of a 2.9-high view, nearly half
   // the picture, the long side across; and framed, clear of the borders.
-  EXPECT_GT(covered, dims[0] * dims[1] / 3);
-  EXPECT_GT(xMax - xMin, 2 * (yMax - yMin) * 3 / 4);
-  EXPECT_GT(xMin, 0);
-  EXPECT_LT(xMax, dims[0] - 1);
-  EXPECT_GT(yMin, 0);
-  EXPECT_LT(yMax, dims[1] - 1);
+  EXPECT_GT(drawn.Count, dims[0] * dims[1] / 3);
+  EXPECT_GT(drawn.XMax - drawn.XMin, 2 * (drawn.YMax - drawn.YMin) * 3 / 4);
+  EXPECT_GT(drawn.XMin, 0);
+  EXPECT_LT(drawn.XMax, dims[0] - 1);
+  EXPECT_GT(drawn.YMin, 0);
+  EXPECT_LT(drawn.YMax, dims[1] - 1);
 }
 
 // A box seen from above and in front, drawn on the CPU: framed whole, edges drawn, and only the
@@ -262,37 +284,19 @@ TEST(RegressionImage, MeshPictureShowsOnlyTheFacesInFront)
   ASSERT_EQ(dims[0], 200);
   ASSERT_EQ(dims[1], 150);
   const auto* rgb = static_cast<unsigned char*>(picture->GetScalarPointer());
-  std::map<std::array<int, 3>, int> colours; // colour -> pixels
-  int xMin = dims[0], xMax = -1, yMin = dims[1], yMax = -1;
-  for (int y = 0; y < dims[1]; ++y)
-  {
-    for (int x = 0; x < dims[0]; ++x)
-    {
-      const unsigned char* p = rgb + 3 * (x + y * dims[0]);
-      const std::array<int, 3> colour = { p[0], p[1], p[2] };
-      if (colour == std::array<int, 3>{ 255, 255, 255 })
-      {
-        continue;
-      }
-      ++colours[colour];
-      xMin = std::min(xMin, x);
-      xMax = std::max(xMax, x);
-      yMin = std::min(yMin, y);
-      yMax = std::max(yMax, y);
-    }
-  }
+  DrawnPixels drawn(picture);
   // Framed: the whole box, clear of the picture's borders, across most of its width.
-  EXPECT_GT(xMin, 0);
-  EXPECT_LT(xMax, dims[0] - 1);
-  EXPECT_GT(yMin, 0);
-  EXPECT_LT(yMax, dims[1] - 1);
-  EXPECT_GT(xMax - xMin, dims[0] / 2);
+  EXPECT_GT(drawn.XMin, 0);
+  EXPECT_LT(drawn.XMax, dims[0] - 1);
+  EXPECT_GT(drawn.YMin, 0);
+  EXPECT_LT(drawn.YMax, dims[1] - 1);
+  EXPECT_GT(drawn.XMax - drawn.XMin, dims[0] / 2);
   // Edges drawn dark.
   const std::array<int, 3> edge = { 25, 25, 25 };
-  EXPECT_GT(colours[edge], 100);
+  EXPECT_GT(drawn.Colours[edge], 100);
   // Four triangles in view (top and front), each in its own colour; nothing of the others.
   int large = 0;
-  for (const auto& [colour, count] : colours)
+  for (const auto& [colour, count] : drawn.Colours)
   {
     large += colour != edge && count >= 30;
   }
