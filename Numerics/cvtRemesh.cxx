@@ -1546,7 +1546,15 @@ int OpenCoveredHoles(
       break;
     }
     // A hole the remesh keeps (or merged with another) has border vertices on it.
-    bool covered = true;
+    const auto nearBorder = [&](int p)
+    {
+      return std::any_of(borderVertices.begin(), borderVertices.end(),
+        [&](int v) { return Distance2(surface.Point(p), vertex(v)) <= edgeLength * edgeLength; });
+    };
+    if (std::any_of(loop.begin(), loop.end(), nearBorder))
+    {
+      continue;
+    }
     double middle[3] = { 0.0, 0.0, 0.0 };
     for (int p : loop)
     {
@@ -1554,14 +1562,6 @@ int OpenCoveredHoles(
       {
         middle[k] += surface.Point(p)[k] / static_cast<double>(loop.size());
       }
-      for (int v : borderVertices)
-      {
-        covered = covered && Distance2(surface.Point(p), vertex(v)) > edgeLength * edgeLength;
-      }
-    }
-    if (!covered)
-    {
-      continue;
     }
     int nearest = -1;
     double nearestDistance = std::numeric_limits<double>::max();

@@ -624,9 +624,7 @@ std::vector<double> LoopLengths(const std::vector<double>& points, const std::ve
   {
     const double* a = &points[3 * static_cast<size_t>(loop[k])];
     const double* b = &points[3 * static_cast<size_t>(loop[(k + 1) % loop.size()])];
-    lengths[k + 1] = lengths[k] +
-      std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-        (a[2] - b[2]) * (a[2] - b[2]));
+    lengths[k + 1] = lengths[k] + std::sqrt(Distance2(a, b));
   }
   return lengths;
 }
