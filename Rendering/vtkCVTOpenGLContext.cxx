@@ -69,6 +69,11 @@ void vtkCVTOpenGLContext::LetGo()
     this->RestorePrevious();
   }
   this->Window = nullptr;
+  if (this->XDisplay)
+  {
+    XCloseDisplay(static_cast<Display*>(this->XDisplay));
+    this->XDisplay = nullptr;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -119,28 +124,47 @@ bool vtkCVTOpenGLContext::Initialize()
   }
   if (!this->Window && tryWindow)
   {
-    vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
-    auto* openGLWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
-    if (openGLWindow)
+    // The connection is opened here and handed to VTK: VTK's X window aborts the process,
+    // silently when its error output is off, on a server that refuses it (not running, busy).
+    Display* xDisplay = XOpenDisplay(nullptr);
+    if (!xDisplay)
     {
-      openGLWindow->SetOffScreenRendering(1);
-      openGLWindow->SetSize(16, 16);
-      openGLWindow->Initialize();
-      int version = 0;
-      if (openGLWindow->GetGenericContext())
+      reasons += std::string("X11 window: cannot connect to the X server DISPLAY=") + display +
+        " (is it running?). ";
+    }
+    else
+    {
+      vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+      auto* openGLWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+      if (openGLWindow)
       {
-        openGLWindow->MakeCurrent();
-        version = cvtgl::CurrentOpenGLVersion();
+        openGLWindow->SetDisplayId(xDisplay);
+        openGLWindow->SetOffScreenRendering(1);
+        openGLWindow->SetSize(16, 16);
+        openGLWindow->Initialize();
+        int version = 0;
+        if (openGLWindow->GetGenericContext())
+        {
+          openGLWindow->MakeCurrent();
+          version = cvtgl::CurrentOpenGLVersion();
+        }
+        if (version >= cvtgl::MinimumOpenGLVersion)
+        {
+          this->Window = openGLWindow;
+          this->XDisplay = xDisplay;
+          this->Description = "X11 offscreen window";
+        }
+        else
+        {
+          reasons += "X11 window: it could not be initialised with OpenGL >= 4.0 (it has " +
+            cvtgl::OpenGLVersionText(version) + "). ";
+          openGLWindow->Finalize();
+        }
       }
-      if (version >= cvtgl::MinimumOpenGLVersion)
+      window = nullptr; // the window goes before its connection
+      if (!this->XDisplay)
       {
-        this->Window = openGLWindow;
-        this->Description = "X11 offscreen window";
-      }
-      else
-      {
-        reasons += "X11 window: it could not be initialised with OpenGL >= 4.0 (it has " +
-          cvtgl::OpenGLVersionText(version) + "). ";
+        XCloseDisplay(xDisplay);
       }
     }
   }

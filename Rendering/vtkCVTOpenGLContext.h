@@ -90,6 +90,7 @@ private:
   std::unique_ptr<SavedContext> Saved;
   vtkSmartPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkOpenGLRenderWindow> HandedIn; // see SetRenderWindow
+  void* XDisplay = nullptr; // our X window's connection (Display*), closed after the window
   std::string LastError;
   std::string Description;
   int MaximumTextureSize = 0;

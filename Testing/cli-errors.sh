@@ -107,4 +107,10 @@ if CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" image --engine opengl --resolut
 elif ! grep -q "no OpenGL >= 4.0 context" "$T/log"; then
   echo "no-context failure without a clear message:"; cat "$T/log"; bad=1
 fi
+# An X server that refuses the connection (none on that display): a clear error, not VTK's abort.
+if CVT_OPENGL_CONTEXT=window DISPLAY=:4242 "$CVT" image --engine opengl --resolution 16 --sites 3 --output "$T/out" > "$T/log" 2>&1; then
+  echo "ran without an X server"; bad=1
+elif ! grep -q "cannot connect to the X server DISPLAY=:4242" "$T/log"; then
+  echo "a refused X connection without a clear message:"; cat "$T/log"; bad=1
+fi
 [ $bad -eq 0 ] && echo "cli errors: ok" || { echo "cli errors: FAILED"; exit 1; }

@@ -60,8 +60,8 @@ run)
   fi
   export DISPLAY=":$(cat "$state/display")"
   # Xvfb now and then refuses one of several clients connecting at once ("bad X server
-  # connection" from VTK, before any of our code runs): that start alone is tried again, up to
-  # three times; any other failure is the test's own.
+  # connection" from VTK, "cannot connect to the X server" from vtkCVTOpenGLContext): that
+  # start alone is tried again, up to three times; any other failure is the test's own.
   for attempt in 1 2 3; do
     # The server refuses a connection now and then while it is busy: wait up to 10 s for it.
     ready=0
@@ -80,7 +80,7 @@ run)
     "$@" 2>&1 | tee "$log"
     status=${PIPESTATUS[0]}
     refused=0
-    grep -q "bad X server connection" "$log" && refused=1
+    grep -q "bad X server connection\|cannot connect to the X server" "$log" && refused=1
     rm -f "$log"
     if [ "$status" -ne 0 ] && [ "$refused" -eq 1 ] && [ "$attempt" -lt 3 ]; then
       echo "xvfb.sh: the X server refused the connection (attempt $attempt of 3); starting again"

@@ -649,6 +649,30 @@ TEST(ImageFilterBadInput, NoOpenGLContext)
   EXPECT_TRUE(Contains(message, "no OpenGL >= 4.0 context"));
 }
 
+TEST(ImageFilterBadInput, XServerThatRefusesTheConnection)
+{
+  // VTK's X window aborts the process when the server refuses it; the filter reports it.
+  const char* display = std::getenv("DISPLAY");
+  const std::string savedDisplay = display ? display : "";
+  setenv("DISPLAY", ":4242", 1); // no server there
+  setenv("CVT_OPENGL_CONTEXT", "window", 1);
+  vtkNew<vtkCVTImageFilter> filter;
+  filter->SetInputData(MakeImage(8, 8));
+  filter->SetNumberOfSites(3);
+  filter->SetEngineToOpenGL();
+  const std::string message = RunExpectingError(filter);
+  unsetenv("CVT_OPENGL_CONTEXT");
+  if (display)
+  {
+    setenv("DISPLAY", savedDisplay.c_str(), 1);
+  }
+  else
+  {
+    unsetenv("DISPLAY");
+  }
+  EXPECT_TRUE(Contains(message, "cannot connect to the X server DISPLAY=:4242")) << message;
+}
+
 TEST(ImageFilterBadInput, OpenGLLostBetweenUpdates)
 {
   // A result, then no new context can be made (a driver reset, a server losing its GPU:
