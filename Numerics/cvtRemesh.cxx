@@ -33,6 +33,11 @@ constexpr double FarFromInput = 0.008;
 /// (flips, moves, collapses) aim to widen it.
 constexpr double ThinCorner = 30.0 * 3.14159265358979323846 / 180.0;
 
+/// Vertices fitted to tips and ridges the remesh cut off keep their corners at this angle or more
+/// (radians: 27 degrees): a little under ThinCorner, so they reach closer, and above the 25 a
+/// remesh should keep.
+constexpr double FitCorner = 27.0 * 3.14159265358979323846 / 180.0;
+
 /// The angles (radians) of triangle p0 p1 p2 at its three corners.
 void CornerAngles(const double* p0, const double* p1, const double* p2, double angle[3])
 {
@@ -786,10 +791,10 @@ std::vector<double> InputProbes(const SurfaceMesh& surface, double spacing)
 /// surface points nearest to the farthest of them and to places a quarter, half and three quarters
 /// of the way there, the farthest first; it takes the first that brings its own points 10% closer,
 /// takes no point within two edges farther than the farthest was, keeps its triangles' corners at
-/// 30 degrees or more (or no smaller than before), turns none of them over and lifts their
-/// centroids no farther from the input than `tolerance` (or than before). Up to three passes, the
-/// later ones round the vertices moved. The connectivity, and so the valences, stay. Returns the
-/// number of vertices moved.
+/// 27 degrees or more (FitCorner; or no smaller than before), turns none of them over and lifts
+/// their centroids no farther from the input than `tolerance` (or than before). Up to three passes,
+/// the later ones round the vertices moved. The connectivity, and so the valences, stay. Returns
+/// the number of vertices moved.
 int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vector<double>& probes,
   const SurfaceProjector& projector, double tolerance)
 {
@@ -991,7 +996,7 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
         std::copy(q, q + 3, point(v));
         double smallest = 0.0, lift = 0.0;
         if (fan(v, start.data(), smallest, lift) &&
-          smallest >= std::min(smallestBefore, ThinCorner) &&
+          smallest >= std::min(smallestBefore, FitCorner) &&
           lift <= std::max(liftBefore, tolerance) && farthest({ v }, ignored) < 0.9 * ownBefore &&
           farthest(group, ignored) <= before)
         {

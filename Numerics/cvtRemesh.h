@@ -51,7 +51,7 @@ struct Remesh
 /// pinned to a crease (not to the border), then search the surface around them for wider places.
 /// Last, free vertices move towards input points (its vertices, and points along its long edges)
 /// that lie farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and ridges
-/// thinner than the cells), where that brings them closer without a corner under 30 degrees.
+/// thinner than the cells), where that brings them closer without a corner under 27 degrees.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 

@@ -1081,14 +1081,15 @@ TEST(RestrictedVoronoi, RemeshVerticesReachForTipsTheTrianglesCutOff)
   ExpectSourceGivesThePointBack(after, spike, tip);
 
   // A spike so sharp that its apex has a 26-degree corner: the vertex climbs only as far as its
-  // corners stay at 30 degrees or more, and still comes closer to the apex.
+  // corners stay at 27 degrees or more (in up to three moves), and still comes closer to the
+  // apex.
   const auto [sharp, sharpDual] = SpikeAndFlatterRemesh(2.0);
   const cvt::Remesh climbed = cvt::BuildRemesh(sharpDual, 1, 8, &sharp);
-  ASSERT_EQ(climbed.FittedVertices, 1);
-  EXPECT_GE(SmallestAngle(climbed), 30.0);
+  ASSERT_GE(climbed.FittedVertices, 1);
+  EXPECT_GE(SmallestAngle(climbed), 27.0);
   const int vertex = static_cast<int>(
     std::find(climbed.SiteIds.begin(), climbed.SiteIds.end(), 0) - climbed.SiteIds.begin());
-  EXPECT_GT(climbed.Points[3 * vertex + 2], 1.0 + 1e-6);
+  EXPECT_GT(climbed.Points[3 * vertex + 2], 1.75); // 1.86; holding 30 degrees it stopped at 1.5
   EXPECT_LT(climbed.Points[3 * vertex + 2], 2.0 - 1e-6);
   std::cout << "[ measured ] sharp spike: the vertex climbed from height 1 to "
             << climbed.Points[3 * vertex + 2] << " of 2, smallest angle " << SmallestAngle(climbed)
