@@ -173,7 +173,8 @@ int RunRemesh(const Options& options)
               << " edges flipped for angles, " << Field(remesh, "ValenceFlips") << " for valence, "
               << Field(remesh, "MovedVertices") << " vertices moved, "
               << Field(remesh, "CollapsedEdges") << " edges collapsed, "
-              << Field(remesh, "FittedVertices") << " vertices moved towards tips)\n"
+              << Field(remesh, "FittedVertices") << " vertices moved towards tips, "
+              << Field(remesh, "StraddlingVertices") << " moved to straddle the input)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "

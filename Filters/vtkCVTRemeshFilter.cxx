@@ -550,6 +550,7 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
   cvtvtk::AddFieldValue(fields, "CollapsedEdges", remesh.CollapsedEdges);
   cvtvtk::AddFieldValue(fields, "SeparatedVertices", remesh.SeparatedVertices);
   cvtvtk::AddFieldValue(fields, "FittedVertices", remesh.FittedVertices);
+  cvtvtk::AddFieldValue(fields, "StraddlingVertices", remesh.StraddlingVertices);
   AddTopology(fields, "", topology);
   AddTopology(fields, "Input", input);
 }

@@ -31,7 +31,8 @@ struct Remesh
   int CollapsedEdges = 0;    // edges of thin triangles collapsed (a vertex fewer each)
   int SeparatedVertices = 0; // vertices at one place moved apart (split copies)
   int FittedVertices = 0;    // free vertices moved towards input tips and ridges the remesh cut off
-  int OpenedHoles = 0;       // triangles taken out where the input has a hole the cells covered
+  int StraddlingVertices = 0; // free vertices moved along their normals to straddle the input
+  int OpenedHoles = 0;        // triangles taken out where the input has a hole the cells covered
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
@@ -49,9 +50,12 @@ struct Remesh
 /// them, and where that is not enough an edge of theirs is collapsed (the remesh then has a vertex
 /// fewer) if that widens the triangles around it; the vertices of thin triangles left, free or
 /// pinned to a crease (not to the border), then search the surface around them for wider places.
-/// Last, free vertices move towards input points (its vertices, and points along its long edges)
+/// Then free vertices move towards input points (its vertices, and points along its long edges)
 /// that lie farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and ridges
 /// thinner than the cells), where that brings them closer without a corner under 27 degrees.
+/// Last, where the remesh still lies farther than that from the input either way, free vertices
+/// off creases and the border move along their normals so that it straddles the input (a
+/// least-squares step), where that brings the remesh round them no farther from it.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 

@@ -1139,6 +1139,117 @@ TEST(RestrictedVoronoi, RemeshVerticesReachForRidgesBetweenInputVertices)
   ExpectSourceGivesThePointBack(remesh, roof, vertex);
 }
 
+/// The farthest that points of `from` (its vertices and, per triangle, a grid of `steps` per
+/// edge) lie from the triangles of `to`, by brute force.
+double FarthestPoint(const std::vector<double>& fromPoints,
+  const std::vector<std::array<int, 3>>& fromTriangles, const std::vector<double>& toPoints,
+  const std::vector<std::array<int, 3>>& toTriangles, int steps)
+{
+  double farthest = 0.0;
+  for (const auto& t : fromTriangles)
+  {
+    for (int i = 0; i <= steps; ++i)
+    {
+      for (int j = 0; i + j <= steps; ++j)
+      {
+        const double u = static_cast<double>(i) / steps, v = static_cast<double>(j) / steps;
+        double p[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          p[k] = (1 - u - v) * fromPoints[3 * t[0] + k] + u * fromPoints[3 * t[1] + k] +
+            v * fromPoints[3 * t[2] + k];
+        }
+        double nearest = 1e300;
+        for (const auto& s : toTriangles)
+        {
+          double q[3], w[3];
+          cvt::ClosestPointOnTriangle(
+            p, &toPoints[3 * s[0]], &toPoints[3 * s[1]], &toPoints[3 * s[2]], q, w);
+          nearest = std::min(nearest, cvt::Distance2(p, q));
+        }
+        farthest = std::max(farthest, std::sqrt(nearest));
+      }
+    }
+  }
+  return farthest;
+}
+
+/// The dual of `sites` CVT sites on `sphere`, after 60 L-BFGS iterations.
+cvt::RestrictedDual SphereDual(const cvt::SurfaceMesh& sphere, int sites)
+{
+  cvt::RestrictedVoronoi engine;
+  EXPECT_TRUE(engine.SetMesh(sphere));
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = 60;
+  cvt::OptimizerResult result;
+  std::string error;
+  cvt::RestrictedProblem problem(engine);
+  EXPECT_TRUE(cvt::RunLBFGS(
+    problem, { cvt::SampleMeshSites(sphere, sites, 4), {} }, options, nullptr, result, error))
+    << error;
+  cvt::RestrictedDual dual;
+  EXPECT_TRUE(engine.ComputeDual(dual));
+  return dual;
+}
+
+TEST(RestrictedVoronoi, SphereRemeshStraddlesTheInput)
+{
+  // The remesh of 60 sites on a sphere, with its vertices at the sites' surface points, lies
+  // inside the sphere: its flat triangles cut under the surface by up to the chord's sag (about
+  // h^2 / 8 for edges h = 0.5), farther than 0.8% of the bounding-box diagonal (0.028). Given
+  // the input, the vertices move out along their normals so that the remesh straddles the
+  // sphere: the farthest distance either way falls, and the vertices' source points stay on
+  // the input. With 300 sites the remesh lies within 0.8% everywhere, and stays.
+  const cvt::SurfaceMesh sphere = Sphere(4);
+  EXPECT_EQ(cvt::BuildRemesh(SphereDual(sphere, 300), 0, 8, &sphere).StraddlingVertices, 0);
+  const cvt::RestrictedDual dual = SphereDual(sphere, 60);
+  const cvt::Remesh inscribed = cvt::BuildRemesh(dual, 0);
+  const cvt::Remesh straddling = cvt::BuildRemesh(dual, 0, 8, &sphere);
+  EXPECT_EQ(inscribed.StraddlingVertices, 0);
+  EXPECT_GT(straddling.StraddlingVertices, 50); // all but a few
+  const auto twoWay = [&sphere](const cvt::Remesh& remesh)
+  {
+    return std::max(
+      FarthestPoint(sphere.Points, sphere.Triangles, remesh.Points, remesh.Triangles, 1),
+      FarthestPoint(remesh.Points, remesh.Triangles, sphere.Points, sphere.Triangles, 4));
+  };
+  const double before = twoWay(inscribed), after = twoWay(straddling);
+  EXPECT_GT(before, 0.004);
+  EXPECT_LT(after, 0.8 * before);
+  // Outwards, by less than the sag.
+  double radius = 0.0;
+  for (size_t v = 0; v < straddling.SiteIds.size(); ++v)
+  {
+    radius += std::sqrt(cvt::Dot(&straddling.Points[3 * v], &straddling.Points[3 * v]));
+  }
+  radius /= static_cast<double>(straddling.SiteIds.size());
+  EXPECT_GT(radius, 1.0);
+  EXPECT_LT(radius, 1.0 + before);
+  EXPECT_GE(SmallestAngle(straddling), 27.0);
+  // The source points (which point arrays are interpolated from) stay on the input (within its
+  // own sag, 0.004), under the vertices that moved out.
+  int outside = 0;
+  for (size_t v = 0; v < straddling.SiteIds.size(); ++v)
+  {
+    const auto& source = sphere.Triangles[straddling.SourceTriangles[v]];
+    double x[3] = { 0.0, 0.0, 0.0 };
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] += straddling.SourceBarycentric[3 * v + c] * sphere.Point(source[c])[k];
+      }
+    }
+    const double sourceRadius = std::sqrt(cvt::Dot(x, x));
+    EXPECT_NEAR(sourceRadius, 1.0, 0.004);
+    outside += std::sqrt(cvt::Dot(&straddling.Points[3 * v], &straddling.Points[3 * v])) >
+      sourceRadius + 0.004;
+  }
+  EXPECT_GT(outside, 50);
+  std::cout << "[ measured ] sphere, 60 sites: farthest distance either way " << before
+            << " inscribed, " << after << " straddling; mean vertex radius " << radius << "\n";
+}
+
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
 {
   // A square of two triangles, one flipped, plus a duplicate, a degenerate and an unused point.
