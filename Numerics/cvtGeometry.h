@@ -3,6 +3,8 @@
 #ifndef cvtGeometry_h
 #define cvtGeometry_h
 
+#include <cmath>
+
 namespace cvt
 {
 
@@ -22,6 +24,26 @@ inline void Cross(const double* a, const double* b, double* out)
   out[0] = a[1] * b[2] - a[2] * b[1];
   out[1] = a[2] * b[0] - a[0] * b[2];
   out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/// The normal of triangle abc scaled by twice its area (the cross product of two edges): summed
+/// over the triangles round a vertex, their area-weighted normal.
+inline void TriangleNormal(const double* a, const double* b, const double* c, double n[3])
+{
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  Cross(u, v, n);
+}
+
+/// The unit normal of triangle abc (zero when degenerate).
+inline void UnitNormal(const double* a, const double* b, const double* c, double n[3])
+{
+  TriangleNormal(a, b, c, n);
+  const double length = std::sqrt(Dot(n, n));
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] = length > 0.0 ? n[k] / length : 0.0;
+  }
 }
 
 /// The point of triangle abc nearest to p, and its barycentric coordinates there (Ericson,

@@ -68,19 +68,6 @@ double SmallestCorner(const double* p0, const double* p1, const double* p2)
   return *std::min_element(angle, angle + 3);
 }
 
-/// The unit normal of triangle p0 p1 p2 (zero when degenerate).
-void UnitNormal(const double* p0, const double* p1, const double* p2, double n[3])
-{
-  const double u[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
-  const double v[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
-  Cross(u, v, n);
-  const double length = std::sqrt(Dot(n, n));
-  for (int k = 0; k < 3; ++k)
-  {
-    n[k] = length > 0.0 ? n[k] / length : 0.0;
-  }
-}
-
 /// Two orthonormal vectors perpendicular to `normal` (any length); false if it is zero.
 bool TangentBasis(const double normal[3], double u[3], double w[3])
 {
@@ -793,16 +780,10 @@ std::vector<double> ProbeAreas(const SurfaceMesh& surface, const std::vector<dou
   std::vector<double> areas(probes.size() / 3, 0.0);
   for (const std::array<int, 3>& t : surface.Triangles)
   {
-    double n[3];
-    const double* a = surface.Point(t[0]);
-    const double u[3] = { surface.Point(t[1])[0] - a[0], surface.Point(t[1])[1] - a[1],
-      surface.Point(t[1])[2] - a[2] };
-    const double v[3] = { surface.Point(t[2])[0] - a[0], surface.Point(t[2])[1] - a[1],
-      surface.Point(t[2])[2] - a[2] };
-    Cross(u, v, n);
+    const double third = TriangleArea(surface, t) / 3.0;
     for (int corner : t)
     {
-      areas[static_cast<size_t>(corner)] += std::sqrt(Dot(n, n)) / 6.0;
+      areas[static_cast<size_t>(corner)] += third;
     }
   }
   return areas;
@@ -1357,13 +1338,9 @@ int StraddleSurface(Remesh& remesh, const std::vector<char>& pinned,
   std::vector<std::array<double, 3>> vertexNormals(vertices, { 0.0, 0.0, 0.0 });
   for (const std::array<int, 3>& c : remesh.Triangles)
   {
-    const double* a = point(static_cast<size_t>(c[0]));
-    const double* b = point(static_cast<size_t>(c[1]));
-    const double* d = point(static_cast<size_t>(c[2]));
-    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
     double twiceArea[3];
-    Cross(u, w, twiceArea);
+    TriangleNormal(point(static_cast<size_t>(c[0])), point(static_cast<size_t>(c[1])),
+      point(static_cast<size_t>(c[2])), twiceArea);
     for (int v : c)
     {
       for (int k = 0; k < 3; ++k)
@@ -2003,14 +1980,7 @@ int OpenCoveredHoles(
   // Vertices that may not be a corner of an opened triangle: the border's, and (once taken)
   // the opened triangles' own, so that each opening is one new loop, never a pinch.
   std::vector<char> taken = BorderVertices(remesh);
-  std::vector<int> borderVertices;
-  for (int v = 0; v < vertexCount; ++v)
-  {
-    if (taken[static_cast<size_t>(v)])
-    {
-      borderVertices.push_back(v);
-    }
-  }
+  const std::vector<int> borderVertices = Flagged(taken);
   std::vector<char> opened(remesh.Triangles.size(), 0);
   for (const std::vector<int>& loop : inputLoops)
   {

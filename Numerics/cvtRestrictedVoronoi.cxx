@@ -961,18 +961,8 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
   for (int t = 0; t < triangleCount; ++t)
   {
     const auto& tri = mesh.Triangles[t];
-    const double* a = mesh.Point(tri[0]);
-    const double* b = mesh.Point(tri[1]);
-    const double* c = mesh.Point(tri[2]);
-    const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-    double* n = &d.Normals[3 * static_cast<size_t>(t)];
-    Cross(e1, e2, n);
-    const double length = std::sqrt(Dot(n, n));
-    for (int k = 0; k < 3; ++k)
-    {
-      n[k] = length > 0.0 ? n[k] / length : 0.0;
-    }
+    UnitNormal(mesh.Point(tri[0]), mesh.Point(tri[1]), mesh.Point(tri[2]),
+      &d.Normals[3 * static_cast<size_t>(t)]);
   }
   const EdgeTable edges(mesh.Triangles);
   d.FindBordersAndFeatures(edges);

@@ -16,20 +16,15 @@
 namespace cvt
 {
 
-namespace
-{
-
 double TriangleArea(const SurfaceMesh& mesh, const std::array<int, 3>& t)
 {
-  const double* a = mesh.Point(t[0]);
-  const double* b = mesh.Point(t[1]);
-  const double* c = mesh.Point(t[2]);
-  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-  const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-    u[0] * v[1] - u[1] * v[0] };
-  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  double n[3];
+  TriangleNormal(mesh.Point(t[0]), mesh.Point(t[1]), mesh.Point(t[2]), n);
+  return 0.5 * std::sqrt(Dot(n, n));
 }
+
+namespace
+{
 
 std::string Where(const SurfaceMesh& mesh, int point)
 {

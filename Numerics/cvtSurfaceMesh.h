@@ -92,6 +92,9 @@ CVTNUMERICS_EXPORT double BoundingBoxDiagonal(const SurfaceMesh& mesh);
 /// Total area, and each triangle's area times its mean density (the sampling weight).
 CVTNUMERICS_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
 
+/// The area of triangle `t` of `mesh`.
+CVTNUMERICS_EXPORT double TriangleArea(const SurfaceMesh& mesh, const std::array<int, 3>& t);
+
 /// `count` points on the surface, drawn with probability proportional to area times density.
 /// With the mesh's topology, every component first gets the few sites its topology needs in a
 /// remesh (4 for genus 0, 8 + 16 g for genus g), when `count` allows, so small parts survive.
