@@ -737,44 +737,8 @@ int CollapseThinTriangles(
   return collapsed;
 }
 
-/// The points of the input a remesh is measured against: its vertices, and points along its
-/// edges longer than `spacing` at most `spacing` apart. A coarse input (CAD) has edges longer
-/// than the cells, whose ridges the remesh cuts across far from any input vertex (pig).
-std::vector<double> InputProbes(const SurfaceMesh& surface, double spacing)
-{
-  std::vector<double> probes(surface.Points);
-  // The long edges, once each (most scans have none).
-  std::vector<std::pair<int, int>> edges;
-  for (const auto& t : surface.Triangles)
-  {
-    for (int e = 0; e < 3; ++e)
-    {
-      if (Distance2(surface.Point(t[e]), surface.Point(t[(e + 1) % 3])) > spacing * spacing)
-      {
-        edges.emplace_back(std::minmax(t[e], t[(e + 1) % 3]));
-      }
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  for (const auto& [a, b] : edges)
-  {
-    const double length = std::sqrt(Distance2(surface.Point(a), surface.Point(b)));
-    const int pieces = spacing > 0.0 ? static_cast<int>(std::ceil(length / spacing)) : 1;
-    for (int i = 1; i < pieces; ++i)
-    {
-      const double along = static_cast<double>(i) / pieces;
-      for (int k = 0; k < 3; ++k)
-      {
-        probes.push_back(surface.Point(a)[k] + along * (surface.Point(b)[k] - surface.Point(a)[k]));
-      }
-    }
-  }
-  return probes;
-}
-
-/// The area each of InputProbes' points stands for: a third of its triangles' areas for the
-/// input's points, none for the points along its long edges.
+/// The area each of CoveringPoints' points stands for: a third of its triangles' areas for the
+/// input's points, none for the points along its long edges and inside its large triangles.
 std::vector<double> ProbeAreas(const SurfaceMesh& surface, const std::vector<double>& probes)
 {
   std::vector<double> areas(probes.size() / 3, 0.0);
@@ -881,7 +845,7 @@ ProbeNeighbourhoods::ProbeNeighbourhoods(const Remesh& remesh, const std::vector
   }
 }
 
-/// Moves free vertices towards the input points (`probes`, see InputProbes) that lie farthest
+/// Moves free vertices towards the input points (`probes`, see CoveringPoints) that lie farthest
 /// from the remesh, where those are farther than `tolerance`: a tip or ridge thinner than the cells
 /// (a toe, an ear) lies in one or two cells, whose flat triangles cut it off. Each input point is
 /// measured against the triangles round its nearest remesh vertex and round that vertex's
@@ -1946,7 +1910,7 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     remesh.MovedVertices += RelaxThinTriangles(remesh, onPinnedBorder, projector, true);
   }
   const double tolerance = FarFromInput * BoundingBoxDiagonal(*surface);
-  const std::vector<double> probes = InputProbes(*surface, tolerance);
+  const std::vector<double> probes = CoveringPoints(*surface, tolerance);
   remesh.FittedVertices = FitToSurface(remesh, pinned, probes, projector, tolerance);
   // Collapses change valences and moves change angles: flips the first pass could not take.
   remesh.ValenceFlips += FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);

@@ -784,6 +784,74 @@ double SurfaceArea(const SurfaceMesh& mesh)
   return area;
 }
 
+std::vector<double> CoveringPoints(const SurfaceMesh& mesh, double spacing)
+{
+  std::vector<double> points(mesh.Points);
+  // Inside the triangles wider than `spacing`: rows parallel to the longest edge, `spacing`
+  // apart, with points `spacing` apart along them (about area / spacing^2 points; none in a
+  // sliver, whose inside lies near its edges' points).
+  for (const auto& t : mesh.Triangles)
+  {
+    int longest = 0;
+    for (int e = 1; e < 3; ++e)
+    {
+      if (Distance2(mesh.Point(t[e]), mesh.Point(t[(e + 1) % 3])) >
+        Distance2(mesh.Point(t[longest]), mesh.Point(t[(longest + 1) % 3])))
+      {
+        longest = e;
+      }
+    }
+    const double* a = mesh.Point(t[longest]);
+    const double* b = mesh.Point(t[(longest + 1) % 3]);
+    const double* c = mesh.Point(t[(longest + 2) % 3]);
+    const double base = std::sqrt(Distance2(a, b));
+    const double height = base > 0.0 ? 2.0 * TriangleArea(mesh, t) / base : 0.0;
+    const int rows = spacing > 0.0 ? static_cast<int>(std::ceil(height / spacing)) : 1;
+    for (int row = 1; row < rows; ++row)
+    {
+      const double up = static_cast<double>(row) / rows; // of the way from the edge to c
+      const int pieces = static_cast<int>(std::ceil((1.0 - up) * base / spacing));
+      for (int i = 1; i < pieces; ++i)
+      {
+        const double along = static_cast<double>(i) / pieces;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double start = a[k] + up * (c[k] - a[k]), end = b[k] + up * (c[k] - b[k]);
+          points.push_back(start + along * (end - start));
+        }
+      }
+    }
+  }
+  // The long edges, once each (most scans have none).
+  std::vector<std::pair<int, int>> edges;
+  for (const auto& t : mesh.Triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      if (Distance2(mesh.Point(t[e]), mesh.Point(t[(e + 1) % 3])) > spacing * spacing)
+      {
+        edges.emplace_back(std::minmax(t[e], t[(e + 1) % 3]));
+      }
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (const auto& [a, b] : edges)
+  {
+    const double length = std::sqrt(Distance2(mesh.Point(a), mesh.Point(b)));
+    const int pieces = spacing > 0.0 ? static_cast<int>(std::ceil(length / spacing)) : 1;
+    for (int i = 1; i < pieces; ++i)
+    {
+      const double along = static_cast<double>(i) / pieces;
+      for (int k = 0; k < 3; ++k)
+      {
+        points.push_back(mesh.Point(a)[k] + along * (mesh.Point(b)[k] - mesh.Point(a)[k]));
+      }
+    }
+  }
+  return points;
+}
+
 std::vector<double> SampleMeshSites(
   const SurfaceMesh& mesh, int count, std::uint64_t seed, const MeshTopology* topology)
 {

@@ -95,6 +95,14 @@ CVTNUMERICS_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
 /// The area of triangle `t` of `mesh`.
 CVTNUMERICS_EXPORT double TriangleArea(const SurfaceMesh& mesh, const std::array<int, 3>& t);
 
+/// Points of the surface such that every point of it lies within about `spacing` of one: its
+/// points first (in order), then points along its edges longer than `spacing`, at most `spacing`
+/// apart, and inside its triangles wider than `spacing`, in rows about as far apart (about
+/// area / spacing^2 of them). A remesh is measured against them: a coarse input (CAD) has edges
+/// longer than the cells, whose ridges a remesh cuts across far from any input point (pig), and
+/// triangles wider than them.
+CVTNUMERICS_EXPORT std::vector<double> CoveringPoints(const SurfaceMesh& mesh, double spacing);
+
 /// `count` points on the surface, drawn with probability proportional to area times density.
 /// With the mesh's topology, every component first gets the few sites its topology needs in a
 /// remesh (4 for genus 0, 8 + 16 g for genus g), when `count` allows, so small parts survive.

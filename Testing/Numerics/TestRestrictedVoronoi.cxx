@@ -1355,6 +1355,53 @@ TEST(SurfaceMesh, TopologyCountsGenusAndLoops)
   EXPECT_EQ(t.EulerCharacteristic, 0);
 }
 
+TEST(SurfaceMesh, CoveringPointsLieNearEveryPointOfTheSurface)
+{
+  // A wide triangle (10 x 6), a sliver 10 long and 0.05 high, and a small one (0.4), measured
+  // with a spacing of 0.5: every point of each (a fine grid of them) lies within the spacing of
+  // a covering point, inside the wide triangle too, far from its edges; the mesh's own points
+  // come first; and the count stays near area / spacing^2, not (length / spacing)^2 per sliver.
+  cvt::SurfaceMesh mesh;
+  mesh.Points = { 0, 0, 0, 10, 0, 0, 3, 6, 0, 0, 0, 1, 10, 0, 1, 5, 0.05, 1, 0, 0, 2, 0.4, 0, 2, 0,
+    0.4, 2 };
+  mesh.Triangles = { { 0, 1, 2 }, { 3, 4, 5 }, { 6, 7, 8 } };
+  const double spacing = 0.5;
+  const std::vector<double> points = cvt::CoveringPoints(mesh, spacing);
+  ASSERT_EQ(points.size() % 3, 0u);
+  EXPECT_TRUE(std::equal(mesh.Points.begin(), mesh.Points.end(), points.begin()));
+  double farthest = 0.0;
+  const int steps = 80;
+  for (const auto& t : mesh.Triangles)
+  {
+    for (int i = 0; i <= steps; ++i)
+    {
+      for (int j = 0; i + j <= steps; ++j)
+      {
+        const double u = static_cast<double>(i) / steps, v = static_cast<double>(j) / steps;
+        double p[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          p[k] =
+            (1 - u - v) * mesh.Point(t[0])[k] + u * mesh.Point(t[1])[k] + v * mesh.Point(t[2])[k];
+        }
+        double nearest = 1e300;
+        for (size_t q = 0; q < points.size(); q += 3)
+        {
+          nearest = std::min(nearest, cvt::Distance2(p, &points[q]));
+        }
+        farthest = std::max(farthest, std::sqrt(nearest));
+      }
+    }
+  }
+  EXPECT_LE(farthest, spacing);
+  EXPECT_GT(farthest, 0.2 * spacing); // not a point per grid sample
+  // Area 30 (about 110 inside the wide triangle, none inside the sliver), 47 along the wide
+  // triangle's edges, 37 along the sliver's, and the 9 corners.
+  EXPECT_LT(points.size() / 3, 250u);
+  std::cout << "[ measured ] " << points.size() / 3 << " covering points, the farthest point "
+            << farthest << " from them (spacing " << spacing << ")\n";
+}
+
 TEST(SurfaceMesh, DensityOfCellSizesMakesSmallCellsDense)
 {
   // Four points in three cells of masses 1, 4 and 0 (an empty cell) and one point in none.
