@@ -159,10 +159,13 @@ int RunRemesh(const Options& options)
               << "  surface area                " << Field(sites, "SurfaceArea") << "\n"
               << "  input topology              " << TopologyText(sites, "Input") << "\n"
               << "  remesh topology             " << TopologyText(remesh, "") << "\n"
-              << "  sites added for topology    " << Field(sites, "AddedSites") << " (in "
+              << "  sites added for topology    "
+              << Field(sites, "AddedSites") - Field(sites, "FarPointSites") << " (in "
               << Field(sites, "TopologyRounds") << " rounds"
               << (Field(sites, "AddedSitesSettled") > 0 ? ", settled under their cells' sizes" : "")
               << ")\n"
+              << "  sites added far from remesh " << Field(sites, "FarPointSites")
+              << " (at input points over 0.9% of the diagonal from it)\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
@@ -265,7 +268,8 @@ int RunSurface(const Options& options)
                 << "  remesh topology             " << TopologyText(remesh, "") << "\n"
                 << "  remesh made as              the restricted Delaunay triangulation of the "
                    "sites on the mesh ("
-                << Field(exact->GetSitesOutput(), "AddedSites") << " sites added for topology)\n";
+                << Field(exact->GetSitesOutput(), "AddedSites")
+                << " sites added for topology and fidelity)\n";
     }
     std::cout << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles\n"

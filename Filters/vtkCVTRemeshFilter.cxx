@@ -52,6 +52,14 @@ constexpr int MaximumRoundsWithoutGain = 5;
 /// Lloyd iterations that settle the added sites under their cells' sizes: 15, 20 and 30 give
 /// about the same valences on the CGAL meshes; at 1000 sites 20 cost 0.06 to 0.18 s.
 constexpr int SettledIterations = 20;
+/// Input points farther than this share of the bounding-box diagonal from the remesh get sites
+/// of their own (RefineForFidelity): the remesh should lie within 1% of the input both ways.
+constexpr double FarInputShare = 0.009;
+/// At most this share of the remesh's vertices is added so (each costs the valences round it
+/// about a vertex's worth of valence 6: creases of CAD models far thinner than the cells would
+/// take hundreds, rotor 0.80 -> 0.71 at 1000 sites), in at most FidelityRounds rounds.
+constexpr double FarInputSitesShare = 0.01;
+constexpr int FidelityRounds = 4;
 
 /// How far a remesh's topology is from the input's: 0 when the same.
 int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
@@ -156,7 +164,8 @@ struct TopologyRefinement
   cvt::Remesh Remesh;         // built from Dual at the end
   cvt::MeshTopology Topology; // the remesh's
   int Mismatch = std::numeric_limits<int>::max(); // TopologyMismatch against the input's
-  int AddedSites = 0;
+  int AddedSites = 0;        // for the topology and for fidelity (RefineForFidelity)
+  int FarPointSites = 0;     // of AddedSites, those at input points far from the remesh
   int Rounds = 0;            // of added sites, all passes
   std::vector<double> Sites; // of Dual
   bool Settled = false;      // by SettleUnderCellSizes
@@ -318,6 +327,58 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
   best.Topology =
     cvt::ComputeMeshTopology(static_cast<int>(best.Remesh.SiteIds.size()), best.Remesh.Triangles);
   best.Mismatch = TopologyMismatch(best.Topology, input);
+  return true;
+}
+
+/// Sites added at input points the remesh lies far from (MeasureFidelity: tips, ears and creases
+/// its flat triangles cut off, farther than FarInputShare of the diagonal), with no Lloyd
+/// iterations, so that the remesh gets vertices there: in rounds, each kept while it brings the
+/// farthest such point closer, keeps the topology no further from the input's and lifts the remesh
+/// no farther from the input than the farther of the two distances was; at most
+/// FarInputSitesShare of the vertices in all. At 1000 sites the input-to-remesh Hausdorff
+/// distance goes pig 1.23 -> 0.94% of the diagonal, lion-head 1.12 -> 0.95, anchor 1.08 -> 0.88
+/// with 2 to 7 sites. The CVT's own sites stay as they are; the remesh has a vertex more each.
+bool RefineForFidelity(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
+  const cvt::MeshTopology& input, const std::function<bool()>& aborted, TopologyRefinement& best,
+  std::string& error)
+{
+  const size_t budget = static_cast<size_t>(
+    std::ceil(FarInputSitesShare * static_cast<double>(best.Remesh.SiteIds.size())));
+  cvt::RemeshFidelity fidelity = cvt::MeasureFidelity(best.Remesh, mesh, FarInputShare, budget);
+  for (int round = 0; round < FidelityRounds && !fidelity.FarPoints.empty() &&
+       static_cast<size_t>(best.FarPointSites) < budget && !aborted();
+       ++round)
+  {
+    const size_t count =
+      std::min(fidelity.FarPoints.size() / 3, budget - static_cast<size_t>(best.FarPointSites));
+    std::vector<double> sites = best.Sites;
+    sites.insert(sites.end(), fidelity.FarPoints.begin(),
+      fidelity.FarPoints.begin() + 3 * static_cast<std::ptrdiff_t>(count));
+    cvt::RestrictedDual dual;
+    if (!engine.SetSites(sites) || !engine.ComputeDual(dual))
+    {
+      error = "the restricted Delaunay triangulation failed: " + engine.GetLastError();
+      return false;
+    }
+    cvt::Remesh remesh = cvt::BuildRemesh(dual, input.Loops.size(), 8, &mesh);
+    cvt::OpenCoveredHoles(remesh, mesh, input.Loops);
+    const cvt::MeshTopology topology =
+      cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+    cvt::RemeshFidelity next = cvt::MeasureFidelity(remesh, mesh, FarInputShare, budget);
+    const int mismatch = TopologyMismatch(topology, input);
+    if (mismatch > best.Mismatch || next.InputToRemesh >= fidelity.InputToRemesh ||
+      next.RemeshToInput > std::max(fidelity.RemeshToInput, fidelity.InputToRemesh))
+    {
+      break;
+    }
+    best.Remesh = std::move(remesh);
+    best.Topology = topology;
+    best.Mismatch = mismatch;
+    best.Sites = std::move(sites);
+    best.AddedSites += static_cast<int>(count);
+    best.FarPointSites += static_cast<int>(count);
+    fidelity = std::move(next);
+  }
   return true;
 }
 
@@ -698,6 +759,12 @@ bool vtkCVTRemeshFilter::Compute(
     vtkErrorMacro("The remesh failed: " << error << ".");
     return false;
   }
+  if (!RefineForFidelity(
+        engine, mesh, inputTopology, [this]() { return this->StopRequested(); }, best, error))
+  {
+    vtkErrorMacro("The remesh failed: " << error << ".");
+    return false;
+  }
   const cvt::Remesh& remesh = best.Remesh;
   const cvt::MeshTopology& remeshTopology = best.Topology;
   FillLabels(labelsOut, triangles, mesh, labels);
@@ -716,6 +783,7 @@ bool vtkCVTRemeshFilter::Compute(
       vtkSMPTools::GetBackend() + ")");
   AddTopology(fields, "Input", inputTopology);
   cvtvtk::AddFieldValue(fields, "AddedSites", best.AddedSites);
+  cvtvtk::AddFieldValue(fields, "FarPointSites", best.FarPointSites);
   cvtvtk::AddFieldValue(fields, "TopologyRounds", best.Rounds);
   cvtvtk::AddFieldValue(fields, "AddedSitesSettled", best.Settled ? 1 : 0);
   cvtvtk::AddFieldValue(fields, "EngineRanks", ranks); // ranks sharing the cell sums

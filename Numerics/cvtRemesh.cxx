@@ -2014,6 +2014,74 @@ int OpenCoveredHoles(
   return remesh.OpenedHoles;
 }
 
+RemeshFidelity MeasureFidelity(
+  const Remesh& remesh, const SurfaceMesh& surface, double share, size_t maximumPoints)
+{
+  RemeshFidelity fidelity;
+  const double diagonal = BoundingBoxDiagonal(surface);
+  const double tolerance = share * diagonal;
+  SurfaceMesh asMesh;
+  asMesh.Points = remesh.Points;
+  asMesh.Triangles = remesh.Triangles;
+  if (asMesh.Triangles.empty())
+  {
+    return fidelity;
+  }
+  const SurfaceProjector onRemesh(asMesh), onInput(surface);
+  const std::vector<double> probes = CoveringPoints(surface, FarFromInput * diagonal);
+  std::vector<double> distance(probes.size() / 3);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(distance.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        distance[static_cast<size_t>(p)] = onRemesh.DistanceTo(&probes[3 * static_cast<size_t>(p)]);
+      }
+    });
+  // The remesh measured likewise against the input.
+  const std::vector<double> remeshPoints = CoveringPoints(asMesh, FarFromInput * diagonal);
+  std::vector<double> lift(remeshPoints.size() / 3);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(lift.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        lift[static_cast<size_t>(p)] =
+          onInput.DistanceTo(&remeshPoints[3 * static_cast<size_t>(p)]);
+      }
+    });
+  fidelity.InputToRemesh = *std::max_element(distance.begin(), distance.end()) / diagonal;
+  fidelity.RemeshToInput = *std::max_element(lift.begin(), lift.end()) / diagonal;
+  // The far points, farthest first, none within twice its distance of one taken before.
+  std::vector<std::pair<double, int>> order;
+  for (size_t p = 0; p < distance.size(); ++p)
+  {
+    if (distance[p] > tolerance)
+    {
+      order.emplace_back(distance[p], static_cast<int>(p));
+    }
+  }
+  std::sort(order.begin(), order.end(), std::greater<>());
+  for (const auto& [d, p] : order)
+  {
+    if (fidelity.FarPoints.size() / 3 >= maximumPoints)
+    {
+      break;
+    }
+    const double* at = &probes[3 * static_cast<size_t>(p)];
+    bool crowded = false;
+    for (size_t q = 0; q < fidelity.FarPoints.size() && !crowded; q += 3)
+    {
+      crowded = Distance2(at, &fidelity.FarPoints[q]) < 4.0 * d * d;
+    }
+    if (!crowded)
+    {
+      fidelity.FarPoints.insert(fidelity.FarPoints.end(), at, at + 3);
+    }
+  }
+  return fidelity;
+}
+
 MeshTopology RemeshTopology(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
 {
   std::vector<int> dualOf;

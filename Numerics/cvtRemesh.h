@@ -70,6 +70,22 @@ CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBo
 CVTNUMERICS_EXPORT int OpenCoveredHoles(
   Remesh& remesh, const SurfaceMesh& surface, const std::vector<std::vector<int>>& inputLoops);
 
+/// How far a remesh and its input lie from each other.
+struct RemeshFidelity
+{
+  double InputToRemesh = 0.0;    // the farthest input point from the remesh, share of the diagonal
+  double RemeshToInput = 0.0;    // the farthest remesh point from the input, likewise
+  std::vector<double> FarPoints; // input points beyond the share asked for (see MeasureFidelity)
+};
+
+/// How far `remesh` and `surface` lie from each other (each measured at its CoveringPoints 0.8%
+/// of the input's diagonal apart, against the other's triangles near them), and the
+/// input points farther than `share` of the diagonal from the remesh (tips and creases its
+/// triangles cut off), farthest first, none within twice its distance of one before it, at most
+/// `maximumPoints` of them.
+CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(
+  const Remesh& remesh, const SurfaceMesh& surface, double share, size_t maximumPoints);
+
 /// The topology of BuildRemesh's remesh of `dual` without building it whole: its triangles and
 /// split vertices without the shaping (flips, moves and collapses keep the topology). For
 /// choosing among many duals the one to build.

@@ -23,6 +23,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSphereSource.h"
+#include "vtkStaticCellLocator.h"
 #include "vtkStaticCleanPolyData.h"
 #include "vtkTable.h"
 #include "vtkTriangleFilter.h"
@@ -122,6 +123,27 @@ vtkSmartPointer<vtkPolyData> Sphere(double radius = 1.0, double x = 0.0)
   sphere->Update();
   auto output = vtkSmartPointer<vtkPolyData>::New();
   output->ShallowCopy(sphere->GetOutput());
+  return output;
+}
+
+/// A unit sphere with a smooth spike 0.4 high at its north pole (within 0.25 radians of it).
+vtkSmartPointer<vtkPolyData> SphereWithSpike()
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(96);
+  sphere->SetPhiResolution(96);
+  sphere->Update();
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->DeepCopy(sphere->GetOutput());
+  for (vtkIdType p = 0; p < output->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    output->GetPoint(p, x);
+    vtkMath::Normalize(x);
+    const double fromPole = std::max(0.0, 1.0 - std::acos(std::clamp(x[2], -1.0, 1.0)) / 0.25);
+    vtkMath::MultiplyScalar(x, 1.0 + 0.4 * fromPole * fromPole);
+    output->GetPoints()->SetPoint(p, x);
+  }
   return output;
 }
 
@@ -260,6 +282,45 @@ TEST(RemeshFilter, ThinTubeKeepsItsGenusWithAddedSites)
   EXPECT_GT(Field(run.Remesh(), "MinimumAngle"), 25.0);
 }
 
+TEST(RemeshFilter, InputPointsFarFromTheRemeshGetSitesOfTheirOwn)
+{
+  // At 200 sites the remesh's flat triangles cut the spike's tip off, 2.15% of the bounding-box
+  // diagonal away. Sites added at the input points farther than 0.9% from the remesh (at most
+  // 1% of its vertices, here 2) give it vertices there: the input then lies within 1.11% of it.
+  // The CVT's own sites stay 200.
+  vtkSmartPointer<vtkPolyData> spike = SphereWithSpike();
+  RemeshRun run(spike, 200, 100);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_EQ(sites->GetNumberOfPoints(), 200);
+  EXPECT_GE(Field(sites, "FarPointSites"), 1);
+  EXPECT_LE(Field(sites, "FarPointSites"), 2);
+  EXPECT_GE(Field(sites, "AddedSites"), Field(sites, "FarPointSites"));
+  ExpectTopology(run.Remesh(), 1, 0, 0);
+  EXPECT_GE(Field(run.Remesh(), "MinimumAngle"), 25.0);
+  // Independently: the input's points against the remesh's triangles.
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(run.Remesh());
+  locator->BuildLocator();
+  double farthest = 0.0, bounds[6];
+  spike->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  for (vtkIdType p = 0; p < spike->GetNumberOfPoints(); ++p)
+  {
+    double nearest[3], distance2 = 0.0;
+    vtkIdType cell = -1;
+    int subId = 0;
+    locator->FindClosestPoint(spike->GetPoint(p), nearest, cell, subId, distance2);
+    farthest = std::max(farthest, std::sqrt(distance2));
+  }
+  EXPECT_LT(farthest / diagonal, 0.013);
+  std::cout << "[ measured ] spike at 200 sites: " << Field(sites, "FarPointSites")
+            << " sites at far input points; the input lies within " << 100.0 * farthest / diagonal
+            << "% of the diagonal of the remesh\n";
+}
+
 TEST(RemeshFilter, ThinTailIsKeptWithAddedSites)
 {
   // The tail (circumference 0.5) is thinner than the cells of 80 sites (about 0.45 across):
@@ -385,8 +446,10 @@ TEST(RemeshFilter, HoleFarSmallerThanTheCellsIsOpenedAsOneTriangle)
   EXPECT_EQ(Field(run.Remesh(), "OpenedHoles"), 1);
   EXPECT_EQ(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
   EXPECT_GT(Field(run.Remesh(), "MinimumAngle"), 25.0);
+  // No site is added for the topology (one may be where the input lies far from the remesh:
+  // FarPointSites).
   vtkPolyData* sites = run.Filter->GetSitesOutput();
-  EXPECT_EQ(Field(sites, "AddedSites"), 0);
+  EXPECT_EQ(Field(sites, "AddedSites"), Field(sites, "FarPointSites"));
   EXPECT_EQ(Field(sites, "TopologyRounds"), 5);
   // The opened triangle is the one round the hole: its three corners within an edge (at most
   // 1.5 of the remesh's mean edge length, where a neighbour's far corner is about 2) of it.

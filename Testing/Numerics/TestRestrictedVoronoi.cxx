@@ -1192,6 +1192,43 @@ cvt::RestrictedDual SphereDual(const cvt::SurfaceMesh& sphere, int sites)
   return dual;
 }
 
+TEST(RestrictedVoronoi, FidelityFindsTheInputPointsTheRemeshCutsOff)
+{
+  // The remesh of the spike whose free vertex sits half way up its side cuts the apex off.
+  // MeasureFidelity's distances either way agree with brute force (points on fine grids over
+  // each triangle), and the apex is the first far point. Once the vertex has moved to the apex
+  // (BuildRemesh given the input), no input point is far.
+  const auto [spike, dual] = SpikeAndFlatterRemesh(0.5);
+  const cvt::Remesh flat = cvt::BuildRemesh(dual, 1);
+  const double diagonal = cvt::BoundingBoxDiagonal(spike);
+  const cvt::RemeshFidelity f = cvt::MeasureFidelity(flat, spike, 0.009, 10);
+  const double inputToRemesh =
+    FarthestPoint(spike.Points, spike.Triangles, flat.Points, flat.Triangles, 40) / diagonal;
+  const double remeshToInput =
+    FarthestPoint(flat.Points, flat.Triangles, spike.Points, spike.Triangles, 40) / diagonal;
+  EXPECT_GT(inputToRemesh, 0.05);
+  EXPECT_NEAR(f.InputToRemesh, inputToRemesh, 0.002);
+  EXPECT_NEAR(f.RemeshToInput, remeshToInput, 0.002);
+  ASSERT_GE(f.FarPoints.size(), 3u);
+  EXPECT_LT(cvt::Distance2(f.FarPoints.data(), spike.Point(0)), 1e-18);
+  // None within twice its distance of one before it, and no more than asked for.
+  for (size_t a = 0; a < f.FarPoints.size(); a += 3)
+  {
+    for (size_t b = a + 3; b < f.FarPoints.size(); b += 3)
+    {
+      EXPECT_GT(cvt::Distance2(&f.FarPoints[a], &f.FarPoints[b]), 0.0);
+    }
+  }
+  EXPECT_EQ(cvt::MeasureFidelity(flat, spike, 0.0001, 1).FarPoints.size(), 3u);
+  const cvt::Remesh fitted = cvt::BuildRemesh(dual, 1, 8, &spike);
+  const cvt::RemeshFidelity after = cvt::MeasureFidelity(fitted, spike, 0.009, 10);
+  EXPECT_LT(after.InputToRemesh, 0.009);
+  EXPECT_TRUE(after.FarPoints.empty());
+  std::cout << "[ measured ] spike cut off: " << f.InputToRemesh << " (brute force "
+            << inputToRemesh << ") input to remesh, " << f.RemeshToInput << " (" << remeshToInput
+            << ") remesh to input, " << f.FarPoints.size() / 3 << " far points\n";
+}
+
 TEST(RestrictedVoronoi, SphereRemeshStraddlesTheInput)
 {
   // The remesh of 60 sites on a sphere, with its vertices at the sites' surface points, lies
