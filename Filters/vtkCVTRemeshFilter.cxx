@@ -171,6 +171,17 @@ struct TopologyRefinement
   bool Settled = false;      // by SettleUnderCellSizes
 };
 
+/// The remesh of `dual` shaped against the input `mesh` (BuildRemesh), with the input's holes it
+/// covers opened, and its `topology`.
+cvt::Remesh ShapedRemesh(const cvt::RestrictedDual& dual, const cvt::SurfaceMesh& mesh,
+  const cvt::MeshTopology& input, cvt::MeshTopology& topology)
+{
+  cvt::Remesh remesh = cvt::BuildRemesh(dual, input.Loops.size(), 8, &mesh);
+  cvt::OpenCoveredHoles(remesh, mesh, input.Loops);
+  topology = cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  return remesh;
+}
+
 /// The added sites of a remesh with the input's topology stay where the rounds' few uniform
 /// Lloyd iterations left them: crowded and irregular round the thin parts (valence 6 about 0.5
 /// there against 0.83 elsewhere), since more uniform iterations would spread them out of the
@@ -322,10 +333,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
     return false;
   }
   // Only the chosen dual is shaped into a remesh (most of the cost of one).
-  best.Remesh = cvt::BuildRemesh(best.Dual, input.Loops.size(), 8, &mesh);
-  cvt::OpenCoveredHoles(best.Remesh, mesh, input.Loops);
-  best.Topology =
-    cvt::ComputeMeshTopology(static_cast<int>(best.Remesh.SiteIds.size()), best.Remesh.Triangles);
+  best.Remesh = ShapedRemesh(best.Dual, mesh, input, best.Topology);
   best.Mismatch = TopologyMismatch(best.Topology, input);
   return true;
 }
@@ -360,10 +368,8 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
       error = "the restricted Delaunay triangulation failed: " + engine.GetLastError();
       return false;
     }
-    cvt::Remesh remesh = cvt::BuildRemesh(dual, input.Loops.size(), 8, &mesh);
-    cvt::OpenCoveredHoles(remesh, mesh, input.Loops);
-    const cvt::MeshTopology topology =
-      cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+    cvt::MeshTopology topology;
+    cvt::Remesh remesh = ShapedRemesh(dual, mesh, input, topology);
     cvt::RemeshFidelity next = cvt::MeasureFidelity(remesh, mesh, FarInputShare, budget);
     const int mismatch = TopologyMismatch(topology, input);
     if (mismatch > best.Mismatch || next.InputToRemesh >= fidelity.InputToRemesh ||
@@ -371,6 +377,7 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& m
     {
       break;
     }
+    best.Dual = std::move(dual);
     best.Remesh = std::move(remesh);
     best.Topology = topology;
     best.Mismatch = mismatch;
