@@ -218,95 +218,6 @@ int FlipThinTriangles(const std::vector<double>& points, const std::vector<char>
     { return flip.SmallestBefore < below && flip.SmallestAfter > flip.SmallestBefore + 1e-9; });
 }
 
-/// The nearest point of the input surface to a point, for vertices that move along it: the
-/// input's triangle centroids in a k-d tree, and the exact closest point among the triangles of
-/// the nearest few.
-class SurfaceProjector
-{
-public:
-  explicit SurfaceProjector(const SurfaceMesh& surface)
-    : Surface(surface)
-    , Centroids(TriangleCentroids(surface))
-    , Tree(3, Cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) // builds the tree
-  {
-  }
-  SurfaceProjector(const SurfaceProjector&) = delete;
-  SurfaceProjector& operator=(const SurfaceProjector&) = delete;
-
-  /// The nearest point `q` (barycentric `w` in the returned input triangle; -1 if none).
-  int Nearest(const double* p, double q[3], double w[3]) const
-  {
-    constexpr size_t Candidates = 16;
-    std::uint32_t ids[Candidates];
-    double distances[Candidates];
-    const size_t found = this->Tree.knnSearch(p, Candidates, ids, distances);
-    double bestDistance = 1e300;
-    int best = -1;
-    for (size_t c = 0; c < found; ++c)
-    {
-      const auto& tri = this->Surface.Triangles[ids[c]];
-      double candidate[3], weights[3];
-      ClosestPointOnTriangle(p, this->Surface.Point(tri[0]), this->Surface.Point(tri[1]),
-        this->Surface.Point(tri[2]), candidate, weights);
-      const double d = Distance2(candidate, p);
-      if (d < bestDistance)
-      {
-        bestDistance = d;
-        std::copy(candidate, candidate + 3, q);
-        std::copy(weights, weights + 3, w);
-        best = static_cast<int>(ids[c]);
-      }
-    }
-    return best;
-  }
-
-  /// How far `p` is from the surface (0 when it has no triangle near).
-  double DistanceTo(const double p[3]) const
-  {
-    double q[3], w[3];
-    return this->Nearest(p, q, w) >= 0 ? std::sqrt(Distance2(q, p)) : 0.0;
-  }
-
-  /// How far the farthest centroid of `triangles` (three points each) is from the surface: a
-  /// change of the remesh must not cut across a crease (the input would then lie far from it).
-  double FarthestCentroid(const std::vector<std::array<const double*, 3>>& triangles) const
-  {
-    double farthest = 0.0;
-    for (const auto& t : triangles)
-    {
-      double c[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        c[k] = (t[0][k] + t[1][k] + t[2][k]) / 3.0;
-      }
-      farthest = std::max(farthest, this->DistanceTo(c));
-    }
-    return farthest;
-  }
-
-private:
-  static std::vector<double> TriangleCentroids(const SurfaceMesh& surface)
-  {
-    std::vector<double> centroids(3 * static_cast<size_t>(surface.NumberOfTriangles()));
-    for (int t = 0; t < surface.NumberOfTriangles(); ++t)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        centroids[3 * t + k] =
-          (surface.Point(surface.Triangles[t][0])[k] + surface.Point(surface.Triangles[t][1])[k] +
-            surface.Point(surface.Triangles[t][2])[k]) /
-          3.0;
-      }
-    }
-    return centroids;
-  }
-
-  const SurfaceMesh& Surface;
-  std::vector<double> Centroids;
-  PointCloud<3> Cloud{ &Centroids };
-  PointTree<3> Tree;
-};
-
 /// How far a pair of triangles on the diagonal (a, b), with the other corners c and d, lies
 /// from the surface: its farthest centroid or the diagonal's midpoint.
 double PairDistance(const SurfaceProjector& surface, const double* a, const double* b,
@@ -1858,8 +1769,20 @@ void SplitPinchedVertices(Remesh& remesh)
 }
 } // namespace
 
-Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole,
-  const SurfaceMesh* surface)
+RemeshInput::RemeshInput(const SurfaceMesh& surface)
+  : Surface(surface)
+  , Diagonal(BoundingBoxDiagonal(surface))
+  , Projector(surface)
+  , Probes(CoveringPoints(surface, FarFromInput * Diagonal))
+  , Areas(ProbeAreas(surface, Probes))
+{
+}
+
+namespace
+{
+/// BuildRemesh, shaped against `input` if given.
+Remesh BuildRemeshAgainst(
+  const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole, const RemeshInput* input)
 {
   std::vector<int> dualOf;
   Remesh remesh = ConnectRemesh(dual, inputBoundaryLoops, maximumHole, dualOf);
@@ -1870,7 +1793,7 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     pinned[v] = dual.Pinned[static_cast<size_t>(dualOf[v])];
   }
   remesh.FlippedEdges = FlipThinTriangles(remesh.Points, pinned, remesh.Triangles);
-  if (!surface)
+  if (!input)
   {
     remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles);
     SplitPinchedVertices(remesh);
@@ -1878,7 +1801,7 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     return remesh;
   }
   // The input lets the flips and the moves below check how far the remesh is from it.
-  const SurfaceProjector projector(*surface);
+  const SurfaceProjector& projector = input->Projector;
   remesh.ValenceFlips = FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);
   // Most remeshes have no thin triangle left.
   const bool anyThin = std::any_of(remesh.Triangles.begin(), remesh.Triangles.end(),
@@ -1909,16 +1832,34 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
     }
     remesh.MovedVertices += RelaxThinTriangles(remesh, onPinnedBorder, projector, true);
   }
-  const double tolerance = FarFromInput * BoundingBoxDiagonal(*surface);
-  const std::vector<double> probes = CoveringPoints(*surface, tolerance);
+  const double tolerance = FarFromInput * input->Diagonal;
+  const std::vector<double>& probes = input->Probes;
   remesh.FittedVertices = FitToSurface(remesh, pinned, probes, projector, tolerance);
   // Collapses change valences and moves change angles: flips the first pass could not take.
   remesh.ValenceFlips += FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);
   remesh.StraddlingVertices =
-    StraddleSurface(remesh, pinned, probes, ProbeAreas(*surface, probes), projector, tolerance);
+    StraddleSurface(remesh, pinned, probes, input->Areas, projector, tolerance);
   SplitPinchedVertices(remesh);
   remesh.SeparatedVertices = SeparateCoincidentVertices(remesh);
   return remesh;
+}
+} // namespace
+
+Remesh BuildRemesh(
+  const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole, const RemeshInput& input)
+{
+  return BuildRemeshAgainst(dual, inputBoundaryLoops, maximumHole, &input);
+}
+
+Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole,
+  const SurfaceMesh* surface)
+{
+  if (!surface)
+  {
+    return BuildRemeshAgainst(dual, inputBoundaryLoops, maximumHole, nullptr);
+  }
+  const RemeshInput input(*surface);
+  return BuildRemeshAgainst(dual, inputBoundaryLoops, maximumHole, &input);
 }
 
 int OpenCoveredHoles(
@@ -2015,10 +1956,10 @@ int OpenCoveredHoles(
 }
 
 RemeshFidelity MeasureFidelity(
-  const Remesh& remesh, const SurfaceMesh& surface, double share, size_t maximumPoints)
+  const Remesh& remesh, const RemeshInput& input, double share, size_t maximumPoints)
 {
   RemeshFidelity fidelity;
-  const double diagonal = BoundingBoxDiagonal(surface);
+  const double diagonal = input.Diagonal;
   const double tolerance = share * diagonal;
   SurfaceMesh asMesh;
   asMesh.Points = remesh.Points;
@@ -2027,8 +1968,8 @@ RemeshFidelity MeasureFidelity(
   {
     return fidelity;
   }
-  const SurfaceProjector onRemesh(asMesh), onInput(surface);
-  const std::vector<double> probes = CoveringPoints(surface, FarFromInput * diagonal);
+  const SurfaceProjector onRemesh(asMesh);
+  const std::vector<double>& probes = input.Probes;
   std::vector<double> distance(probes.size() / 3);
   vtkSMPTools::For(0, static_cast<vtkIdType>(distance.size()),
     [&](vtkIdType begin, vtkIdType end)
@@ -2047,7 +1988,7 @@ RemeshFidelity MeasureFidelity(
       for (vtkIdType p = begin; p < end; ++p)
       {
         lift[static_cast<size_t>(p)] =
-          onInput.DistanceTo(&remeshPoints[3 * static_cast<size_t>(p)]);
+          input.Projector.DistanceTo(&remeshPoints[3 * static_cast<size_t>(p)]);
       }
     });
   fidelity.InputToRemesh = *std::max_element(distance.begin(), distance.end()) / diagonal;

@@ -7,6 +7,7 @@
 #include "cvtNumericsModule.h" // for export macro
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSurfaceMesh.h"
+#include "cvtSurfaceProjector.h"
 
 #include <array>
 #include <vector>
@@ -35,6 +36,22 @@ struct Remesh
   int OpenedHoles = 0;        // triangles taken out where the input has a hole the cells covered
 };
 
+/// The input surface as remeshes are shaped and measured against it (BuildRemesh,
+/// MeasureFidelity): its exact nearest points and its CoveringPoints 0.8% of its bounding-box
+/// diagonal apart. Made once per input: on large inputs they cost as much as shaping a remesh.
+struct CVTNUMERICS_EXPORT RemeshInput
+{
+  explicit RemeshInput(const SurfaceMesh& surface); // which must outlive this
+  RemeshInput(const RemeshInput&) = delete;
+  RemeshInput& operator=(const RemeshInput&) = delete;
+
+  const SurfaceMesh& Surface;
+  double Diagonal;
+  SurfaceProjector Projector;
+  std::vector<double> Probes; // CoveringPoints
+  std::vector<double> Areas;  // the area each probe stands for (none for those off its points)
+};
+
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
 /// points (boundary points for cells on the border), triangles the restricted Delaunay ones;
 /// triangles that would make an edge non-manifold are dropped, as are pairs on the same three
@@ -56,6 +73,10 @@ struct Remesh
 /// Last, where the remesh still lies farther than that from the input either way, free vertices
 /// off creases and the border move along their normals so that it straddles the input (a
 /// least-squares step), where that brings the remesh round them no farther from it.
+CVTNUMERICS_EXPORT Remesh BuildRemesh(
+  const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole, const RemeshInput& input);
+/// The same without the input (no shaping against it) or, given `surface`, with a RemeshInput
+/// made for this remesh alone.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 
@@ -78,13 +99,13 @@ struct RemeshFidelity
   std::vector<double> FarPoints; // input points beyond the share asked for (see MeasureFidelity)
 };
 
-/// How far `remesh` and `surface` lie from each other (each measured at its CoveringPoints 0.8%
+/// How far `remesh` and `input` lie from each other (each measured at its CoveringPoints 0.8%
 /// of the input's diagonal apart, against the other's triangles near them), and the
 /// input points farther than `share` of the diagonal from the remesh (tips and creases its
 /// triangles cut off), farthest first, none within twice its distance of one before it, at most
 /// `maximumPoints` of them.
 CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(
-  const Remesh& remesh, const SurfaceMesh& surface, double share, size_t maximumPoints);
+  const Remesh& remesh, const RemeshInput& input, double share, size_t maximumPoints);
 
 /// The topology of BuildRemesh's remesh of `dual` without building it whole: its triangles and
 /// split vertices without the shaping (flips, moves and collapses keep the topology). For

@@ -9,6 +9,7 @@
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSampling.h"
 #include "cvtSurfaceMesh.h"
+#include "cvtSurfaceProjector.h"
 #include "cvtTestMeshes.h"
 #include "cvtTwoRanks.h"
 
@@ -1201,7 +1202,8 @@ TEST(RestrictedVoronoi, FidelityFindsTheInputPointsTheRemeshCutsOff)
   const auto [spike, dual] = SpikeAndFlatterRemesh(0.5);
   const cvt::Remesh flat = cvt::BuildRemesh(dual, 1);
   const double diagonal = cvt::BoundingBoxDiagonal(spike);
-  const cvt::RemeshFidelity f = cvt::MeasureFidelity(flat, spike, 0.009, 10);
+  const cvt::RemeshInput input(spike);
+  const cvt::RemeshFidelity f = cvt::MeasureFidelity(flat, input, 0.009, 10);
   const double inputToRemesh =
     FarthestPoint(spike.Points, spike.Triangles, flat.Points, flat.Triangles, 40) / diagonal;
   const double remeshToInput =
@@ -1219,9 +1221,9 @@ TEST(RestrictedVoronoi, FidelityFindsTheInputPointsTheRemeshCutsOff)
       EXPECT_GT(cvt::Distance2(&f.FarPoints[a], &f.FarPoints[b]), 0.0);
     }
   }
-  EXPECT_EQ(cvt::MeasureFidelity(flat, spike, 0.0001, 1).FarPoints.size(), 3u);
-  const cvt::Remesh fitted = cvt::BuildRemesh(dual, 1, 8, &spike);
-  const cvt::RemeshFidelity after = cvt::MeasureFidelity(fitted, spike, 0.009, 10);
+  EXPECT_EQ(cvt::MeasureFidelity(flat, input, 0.0001, 1).FarPoints.size(), 3u);
+  const cvt::Remesh fitted = cvt::BuildRemesh(dual, 1, 8, input);
+  const cvt::RemeshFidelity after = cvt::MeasureFidelity(fitted, input, 0.009, 10);
   EXPECT_LT(after.InputToRemesh, 0.009);
   EXPECT_TRUE(after.FarPoints.empty());
   std::cout << "[ measured ] spike cut off: " << f.InputToRemesh << " (brute force "
@@ -1390,6 +1392,48 @@ TEST(SurfaceMesh, TopologyCountsGenusAndLoops)
   EXPECT_EQ(t.Genus, 1);
   EXPECT_EQ(t.BoundaryLoops, 0);
   EXPECT_EQ(t.EulerCharacteristic, 0);
+}
+
+TEST(SurfaceMesh, ProjectorFindsTheNearestPointExactly)
+{
+  // A sphere of small triangles beside a plane of two large ones: the nearest centroids of a
+  // point just above the plane are the sphere's (the 16 nearest made the point 6 from the
+  // surface, not 0.2), yet the plane is nearest. Against brute force over every triangle.
+  const cvt::SurfaceMesh mesh =
+    cvttest::TwoParts(cvttest::FlatSquare(1, -20.0, 20.0), cvttest::Sphere(3), 3.0);
+  const cvt::SurfaceProjector projector(mesh);
+  const double above[3] = { 10.0, 0.0, 0.2 };
+  EXPECT_NEAR(projector.DistanceTo(above), 0.2, 1e-12);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> across(-20.0, 20.0), height(-3.0, 3.0);
+  for (int i = 0; i < 2000; ++i)
+  {
+    const double p[3] = { across(random), across(random) / 4.0, height(random) };
+    double nearest = 1e300;
+    for (const auto& t : mesh.Triangles)
+    {
+      double q[3], w[3];
+      cvt::ClosestPointOnTriangle(p, mesh.Point(t[0]), mesh.Point(t[1]), mesh.Point(t[2]), q, w);
+      nearest = std::min(nearest, cvt::Distance2(p, q));
+    }
+    double q[3], w[3];
+    const int t = projector.Nearest(p, q, w);
+    ASSERT_GE(t, 0);
+    EXPECT_NEAR(cvt::Distance2(p, q), nearest, 1e-12)
+      << "at " << p[0] << " " << p[1] << " " << p[2];
+    // q is the point of triangle t at weights w.
+    const auto& tri = mesh.Triangles[static_cast<size_t>(t)];
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_NEAR(q[k],
+        w[0] * mesh.Point(tri[0])[k] + w[1] * mesh.Point(tri[1])[k] + w[2] * mesh.Point(tri[2])[k],
+        1e-12);
+    }
+  }
+  // A mesh without triangles has no nearest point.
+  const cvt::SurfaceMesh empty;
+  double q[3], w[3];
+  EXPECT_EQ(cvt::SurfaceProjector(empty).Nearest(above, q, w), -1);
 }
 
 TEST(SurfaceMesh, CoveringPointsLieNearEveryPointOfTheSurface)

@@ -1,0 +1,254 @@
+#include "cvtSurfaceProjector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+
+#include "cvtGeometry.h"
+#include "cvtPointCloud.h"
+
+namespace cvt
+{
+
+namespace
+{
+/// Triangles (or pieces of triangles) of about one size: their centroids in a k-d tree, and how
+/// far each reaches.
+struct SizeClass
+{
+  std::vector<int> Triangles;    // of the mesh, per entry
+  std::vector<double> Centroids; // 3 per entry
+  std::vector<double> Radii;     // the farthest corner from the centroid, per entry
+  double Radius = 0.0;           // the largest of them
+  PointCloud<3> Cloud{ &Centroids };
+  std::unique_ptr<PointTree<3>> Tree;
+};
+
+/// A nanoflann result set that is the exact search itself: each centroid the walk offers is
+/// tested against the best distance so far (its triangle cannot be nearer than the centroid's
+/// distance minus the triangle's radius), and the walk's bound shrinks with the best distance.
+class NearestTriangleSearch
+{
+public:
+  NearestTriangleSearch(const SurfaceMesh& mesh, const double* p)
+    : Mesh(mesh)
+    , P(p)
+  {
+  }
+
+  void Walk(const SizeClass& sizeClass)
+  {
+    this->Class = &sizeClass;
+    this->UpdateBound();
+    sizeClass.Tree->findNeighbors(*this, this->P, nanoflann::SearchParams());
+  }
+
+  // nanoflann's result-set interface.
+  size_t size() const { return 1; }
+  bool full() const { return true; }
+  double worstDist() const { return this->Bound2; }
+  bool addPoint(double centroidDistance2, std::uint32_t index)
+  {
+    const double reach = std::sqrt(centroidDistance2) - this->Class->Radii[index];
+    if (reach > 0.0 && reach * reach >= this->Best2)
+    {
+      return true;
+    }
+    const int t = this->Class->Triangles[index];
+    // Pieces of one large triangle: it is tested once.
+    if (std::find(this->Tested, this->Tested + this->TestedCount, t) !=
+      this->Tested + this->TestedCount)
+    {
+      return true;
+    }
+    if (this->TestedCount < MaximumTested)
+    {
+      this->Tested[this->TestedCount++] = t;
+    }
+    const auto& tri = this->Mesh.Triangles[static_cast<size_t>(t)];
+    double q[3], w[3];
+    ClosestPointOnTriangle(
+      this->P, this->Mesh.Point(tri[0]), this->Mesh.Point(tri[1]), this->Mesh.Point(tri[2]), q, w);
+    const double d2 = Distance2(q, this->P);
+    if (d2 < this->Best2)
+    {
+      this->Best2 = d2;
+      this->Best = t;
+      std::copy(q, q + 3, this->Q);
+      std::copy(w, w + 3, this->W);
+      this->UpdateBound();
+    }
+    return true;
+  }
+
+  int Best = -1;
+  double Best2 = std::numeric_limits<double>::infinity();
+  double Q[3] = { 0.0, 0.0, 0.0 };
+  double W[3] = { 0.0, 0.0, 0.0 };
+
+private:
+  void UpdateBound()
+  {
+    const double bound = std::sqrt(this->Best2) + this->Class->Radius;
+    this->Bound2 = bound * bound;
+  }
+
+  static constexpr int MaximumTested = 32;
+  const SurfaceMesh& Mesh;
+  const double* P;
+  const SizeClass* Class = nullptr;
+  int Tested[MaximumTested];
+  int TestedCount = 0;
+  double Bound2 = std::numeric_limits<double>::infinity();
+};
+/// How far the farthest corner of triangle abc lies from its centroid.
+double BoundingRadius(const double* a, const double* b, const double* c)
+{
+  double centroid[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    centroid[k] = (a[k] + b[k] + c[k]) / 3.0;
+  }
+  return std::sqrt(
+    std::max({ Distance2(centroid, a), Distance2(centroid, b), Distance2(centroid, c) }));
+}
+} // namespace
+
+struct SurfaceProjector::Internals
+{
+  std::vector<std::unique_ptr<SizeClass>> Classes; // the most triangles first
+};
+
+SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
+  : Mesh(surface)
+  , Internal(new Internals)
+{
+  const int triangles = surface.NumberOfTriangles();
+  std::vector<double> radii(static_cast<size_t>(triangles));
+  for (int t = 0; t < triangles; ++t)
+  {
+    const auto& tri = surface.Triangles[static_cast<size_t>(t)];
+    radii[static_cast<size_t>(t)] =
+      BoundingRadius(surface.Point(tri[0]), surface.Point(tri[1]), surface.Point(tri[2]));
+  }
+  // Triangles far larger than most (CAD faces, long slivers) enter the trees as pieces no larger
+  // than twice the median triangle nor than 1% of the diagonal (about the distances the remesh is
+  // measured at): a search then visits the few pieces near the point, not every large triangle
+  // whose centroid lies within its radius (cheese: 130 centroids a query).
+  double pieceRadius = 0.01 * BoundingBoxDiagonal(surface);
+  if (triangles > 0)
+  {
+    std::vector<double> sorted = radii;
+    std::nth_element(sorted.begin(), sorted.begin() + triangles / 2, sorted.end());
+    pieceRadius = std::min(pieceRadius, 2.0 * sorted[static_cast<size_t>(triangles / 2)]);
+  }
+  std::map<int, std::unique_ptr<SizeClass>> bySize; // radii a factor 4 apart
+  const auto add = [&bySize](
+                     int t, const double* a, const double* b, const double* c, double radius)
+  {
+    std::unique_ptr<SizeClass>& sizeClass = bySize[radius > 0.0 ? std::ilogb(radius) / 2 : 0];
+    if (!sizeClass)
+    {
+      sizeClass.reset(new SizeClass);
+    }
+    sizeClass->Triangles.push_back(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      sizeClass->Centroids.push_back((a[k] + b[k] + c[k]) / 3.0);
+    }
+    sizeClass->Radii.push_back(radius);
+    sizeClass->Radius = std::max(sizeClass->Radius, radius);
+  };
+  for (int t = 0; t < triangles; ++t)
+  {
+    const auto& tri = surface.Triangles[static_cast<size_t>(t)];
+    const double* a = surface.Point(tri[0]);
+    const double* b = surface.Point(tri[1]);
+    const double* c = surface.Point(tri[2]);
+    const double radius = radii[static_cast<size_t>(t)];
+    if (!(radius > pieceRadius))
+    {
+      add(t, a, b, c, radius);
+      continue;
+    }
+    // m x m pieces on the barycentric grid, each about 1/m of the triangle across.
+    const int m = static_cast<int>(std::min(64.0, std::ceil(radius / pieceRadius)));
+    const auto at = [&](int i, int j)
+    {
+      std::array<double, 3> q;
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = a[k] + (b[k] - a[k]) * i / m + (c[k] - a[k]) * j / m;
+      }
+      return q;
+    };
+    for (int i = 0; i < m; ++i)
+    {
+      for (int j = 0; i + j < m; ++j)
+      {
+        const auto p0 = at(i, j), p1 = at(i + 1, j), p2 = at(i, j + 1);
+        add(t, p0.data(), p1.data(), p2.data(), BoundingRadius(p0.data(), p1.data(), p2.data()));
+        if (i + j + 2 <= m)
+        {
+          const auto p3 = at(i + 1, j + 1);
+          add(t, p1.data(), p3.data(), p2.data(), BoundingRadius(p1.data(), p3.data(), p2.data()));
+        }
+      }
+    }
+  }
+  for (auto& entry : bySize)
+  {
+    SizeClass& sizeClass = *entry.second;
+    sizeClass.Tree.reset(
+      new PointTree<3>(3, sizeClass.Cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)));
+    this->Internal->Classes.push_back(std::move(entry.second));
+  }
+  // The class of most triangles most likely holds the nearest one: walked first, it sets a tight
+  // bound for the others.
+  std::stable_sort(this->Internal->Classes.begin(), this->Internal->Classes.end(),
+    [](const std::unique_ptr<SizeClass>& a, const std::unique_ptr<SizeClass>& b)
+    { return a->Triangles.size() > b->Triangles.size(); });
+}
+
+SurfaceProjector::~SurfaceProjector() = default;
+
+int SurfaceProjector::Nearest(const double* p, double q[3], double w[3]) const
+{
+  NearestTriangleSearch search(this->Mesh, p);
+  for (const auto& sizeClass : this->Internal->Classes)
+  {
+    search.Walk(*sizeClass);
+  }
+  if (search.Best >= 0)
+  {
+    std::copy(search.Q, search.Q + 3, q);
+    std::copy(search.W, search.W + 3, w);
+  }
+  return search.Best;
+}
+
+double SurfaceProjector::DistanceTo(const double p[3]) const
+{
+  double q[3], w[3];
+  return this->Nearest(p, q, w) >= 0 ? std::sqrt(Distance2(q, p)) : 0.0;
+}
+
+double SurfaceProjector::FarthestCentroid(
+  const std::vector<std::array<const double*, 3>>& triangles) const
+{
+  double farthest = 0.0;
+  for (const auto& t : triangles)
+  {
+    double c[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = (t[0][k] + t[1][k] + t[2][k]) / 3.0;
+    }
+    farthest = std::max(farthest, this->DistanceTo(c));
+  }
+  return farthest;
+}
+
+} // namespace cvt

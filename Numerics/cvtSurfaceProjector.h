@@ -1,0 +1,52 @@
+// The nearest point of a triangle mesh to any point in space, exactly: what the remesh's moves,
+// flips and distance measures project onto the input surface with.
+#ifndef cvtSurfaceProjector_h
+#define cvtSurfaceProjector_h
+
+#include "cvtNumericsModule.h" // for export macro
+#include "cvtSurfaceMesh.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace cvt
+{
+
+/// Exact nearest points on `surface` (which must outlive the projector). The triangles, large
+/// ones cut into pieces about the median's size, are grouped by size (bounding radius about the
+/// centroid, classes a factor 4 apart) in one k-d tree of centroids per class; a query walks
+/// each tree while "centroid distance minus the class's largest radius" is below the best
+/// distance so far, so large CAD faces are found however far their centroids lie (the 16 nearest
+/// centroids alone missed them: a remesh 0.7% of the diagonal from anchor measured 9%). Queries
+/// are const and may run in parallel.
+class CVTNUMERICS_EXPORT SurfaceProjector
+{
+public:
+  explicit SurfaceProjector(const SurfaceMesh& surface);
+  ~SurfaceProjector();
+  SurfaceProjector(const SurfaceProjector&) = delete;
+  SurfaceProjector& operator=(const SurfaceProjector&) = delete;
+
+  /// The nearest point `q` of the surface to `p` and its barycentric weights `w` in the returned
+  /// triangle (-1 and `q`, `w` untouched when the surface has no triangle).
+  int Nearest(const double* p, double q[3], double w[3]) const;
+
+  /// How far `p` is from the surface (0 when it has no triangle).
+  double DistanceTo(const double p[3]) const;
+
+  /// How far the farthest centroid of `triangles` (three points each) is from the surface: a
+  /// change of a remesh must not cut across a crease (the input would then lie far from it).
+  double FarthestCentroid(const std::vector<std::array<const double*, 3>>& triangles) const;
+
+  const SurfaceMesh& Surface() const { return this->Mesh; }
+
+private:
+  struct Internals;
+  const SurfaceMesh& Mesh;
+  std::unique_ptr<Internals> Internal;
+};
+
+} // namespace cvt
+
+#endif
