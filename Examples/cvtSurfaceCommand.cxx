@@ -177,6 +177,7 @@ int RunRemesh(const Options& options)
               << Field(remesh, "MovedVertices") << " vertices moved, "
               << Field(remesh, "CollapsedEdges") << " edges collapsed, "
               << Field(remesh, "FittedVertices") << " vertices moved towards tips, "
+              << Field(remesh, "BorderCorners") << " added on border corners, "
               << Field(remesh, "StraddlingVertices") << " moved to straddle the input)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " %\n"

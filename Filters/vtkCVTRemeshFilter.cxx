@@ -620,6 +620,7 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
   cvtvtk::AddFieldValue(fields, "SeparatedVertices", remesh.SeparatedVertices);
   cvtvtk::AddFieldValue(fields, "FittedVertices", remesh.FittedVertices);
   cvtvtk::AddFieldValue(fields, "StraddlingVertices", remesh.StraddlingVertices);
+  cvtvtk::AddFieldValue(fields, "BorderCorners", remesh.BorderCorners);
   AddTopology(fields, "", topology);
   AddTopology(fields, "Input", input);
 }

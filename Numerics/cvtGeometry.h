@@ -3,6 +3,7 @@
 #ifndef cvtGeometry_h
 #define cvtGeometry_h
 
+#include <algorithm>
 #include <cmath>
 
 namespace cvt
@@ -44,6 +45,17 @@ inline void UnitNormal(const double* a, const double* b, const double* c, double
   {
     n[k] = length > 0.0 ? n[k] / length : 0.0;
   }
+}
+
+/// The squared distance from p to the segment ab.
+inline double Distance2ToSegment(const double* p, const double* a, const double* b)
+{
+  const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double ap[3] = { p[0] - a[0], p[1] - a[1], p[2] - a[2] };
+  const double length2 = Dot(ab, ab);
+  const double t = length2 > 0.0 ? std::min(1.0, std::max(0.0, Dot(ab, ap) / length2)) : 0.0;
+  const double q[3] = { a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2] };
+  return Distance2(p, q);
 }
 
 /// The point of triangle abc nearest to p, and its barycentric coordinates there (Ericson,

@@ -940,6 +940,349 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
   return moved;
 }
 
+/// Where the remesh's border cuts off corners of the input's border (a sawtooth edge, notches
+/// narrower than the cells): each border edge of the remesh whose endpoints lie on one input
+/// boundary loop is split at the loop point between them farthest from it, while that point is
+/// farther than `tolerance` and the two new triangles keep their corners at FitCorner or more and
+/// turn by less than 60 degrees from the one they replace (the split edges are looked at again).
+/// The new vertices are pinned, on input points. Returns the number of vertices added.
+int FollowInputBorder(
+  Remesh& remesh, std::vector<char>& pinned, const RemeshInput& input, double tolerance)
+{
+  const SurfaceMesh& surface = input.Surface;
+  if (input.Loops.empty())
+  {
+    return 0;
+  }
+  // Each loop point's place (loop, index) and a triangle it is a corner of.
+  std::unordered_map<int, std::pair<int, int>> onLoop;
+  std::vector<std::vector<double>> lengths;
+  for (size_t l = 0; l < input.Loops.size(); ++l)
+  {
+    for (size_t i = 0; i < input.Loops[l].size(); ++i)
+    {
+      onLoop.emplace(input.Loops[l][i], std::make_pair(static_cast<int>(l), static_cast<int>(i)));
+    }
+    lengths.push_back(LoopLengths(surface.Points, input.Loops[l]));
+  }
+  std::unordered_map<int, std::pair<int, int>> cornerOf; // loop point: (triangle, corner)
+  for (int t = 0; t < surface.NumberOfTriangles(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int p = surface.Triangles[static_cast<size_t>(t)][k];
+      if (onLoop.count(p))
+      {
+        cornerOf.emplace(p, std::make_pair(t, k));
+      }
+    }
+  }
+  // A remesh vertex's place along a loop, from its input triangle and weights: on a border edge
+  // of that triangle (a weight 0) whose points follow each other on a loop.
+  struct Place
+  {
+    int Loop = -1;
+    double Along = 0.0;
+  };
+  const auto placeOf = [&](int v)
+  {
+    Place place;
+    const int t = remesh.SourceTriangles[static_cast<size_t>(v)];
+    if (t < 0)
+    {
+      return place;
+    }
+    const std::array<int, 3>& tri = surface.Triangles[static_cast<size_t>(t)];
+    const double* w = &remesh.SourceBarycentric[3 * static_cast<size_t>(v)];
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto at = onLoop.find(tri[k]);
+      if (w[k] > 1.0 - 1e-9 && at != onLoop.end()) // on a loop point
+      {
+        place.Loop = at->second.first;
+        place.Along = lengths[static_cast<size_t>(place.Loop)][at->second.second];
+        return place;
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto from = onLoop.find(tri[k]);
+      const auto to = onLoop.find(tri[(k + 1) % 3]);
+      if (std::abs(w[(k + 2) % 3]) > 1e-9 || from == onLoop.end() || to == onLoop.end() ||
+        from->second.first != to->second.first)
+      {
+        continue;
+      }
+      const int loop = from->second.first;
+      const int size = static_cast<int>(input.Loops[static_cast<size_t>(loop)].size());
+      const double share = w[(k + 1) % 3];
+      const std::vector<double>& length = lengths[static_cast<size_t>(loop)];
+      const int i = from->second.second, j = to->second.second;
+      if ((i + 1) % size == j)
+      {
+        place.Loop = loop;
+        place.Along = length[i] + share * (length[i + 1] - length[i]);
+        return place;
+      }
+      if ((j + 1) % size == i)
+      {
+        place.Loop = loop;
+        place.Along = length[j] + (1.0 - share) * (length[j + 1] - length[j]);
+        return place;
+      }
+    }
+    return place;
+  };
+  std::vector<Place> places(remesh.SiteIds.size());
+  const std::vector<char> onBorder = BorderVertices(remesh);
+  for (size_t v = 0; v < places.size(); ++v)
+  {
+    if (onBorder[v])
+    {
+      places[v] = placeOf(static_cast<int>(v));
+    }
+  }
+  // The border edges: (triangle, corner) of their first point.
+  std::vector<std::pair<int, int>> work;
+  {
+    const EdgeTable edges(remesh.Triangles);
+    for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
+    {
+      if (edges.Edge(e).size() == 1)
+      {
+        const EdgeUse& use = *edges.Edge(e).begin();
+        work.emplace_back(use.Triangle, use.Local);
+      }
+    }
+  }
+  // The loop point strictly between places p and q (the shorter way round) farthest from the
+  // segment between points x and y, and its squared distance (-1 and 0 if none).
+  const auto farthestBetween = [&](const Place& p, const Place& q, const double* x, const double* y)
+  {
+    std::pair<int, double> far(-1, 0.0);
+    const std::vector<int>& loop = input.Loops[static_cast<size_t>(p.Loop)];
+    const std::vector<double>& length = lengths[static_cast<size_t>(p.Loop)];
+    const double whole = length.back();
+    double from = p.Along, to = q.Along;
+    if (std::fmod(to - from + whole, whole) > 0.5 * whole)
+    {
+      std::swap(from, to);
+    }
+    const double span = std::fmod(to - from + whole, whole);
+    for (size_t i = 0; i < loop.size(); ++i)
+    {
+      const double offset = std::fmod(length[i] - from + whole, whole);
+      if (offset > 0.0 && offset < span)
+      {
+        const double d2 = Distance2ToSegment(surface.Point(loop[i]), x, y);
+        if (d2 > far.second)
+        {
+          far = { loop[i], d2 };
+        }
+      }
+    }
+    return far;
+  };
+  const auto placeOfPoint = [&](int p)
+  {
+    const auto& at = onLoop.at(p);
+    return Place{ at.first,
+      lengths[static_cast<size_t>(at.first)][static_cast<size_t>(at.second)] };
+  };
+  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
+  std::vector<std::vector<int>> around = TrianglesAroundVertices(remesh);
+  // v's neighbours along the border: those of one triangle round v only.
+  const auto borderNeighbours = [&](int v)
+  {
+    std::map<int, int> uses;
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      for (int w : remesh.Triangles[static_cast<size_t>(t)])
+      {
+        if (w != v)
+        {
+          ++uses[w];
+        }
+      }
+    }
+    std::vector<int> once;
+    for (const auto& [w, count] : uses)
+    {
+      if (count == 1)
+      {
+        once.push_back(w);
+      }
+    }
+    return once;
+  };
+  // Moves border vertex v to loop point `to` if its triangles keep their corners and their side,
+  // lie no farther from the input, and its border edges cut no more of the input's border off.
+  const auto moveAlongBorder = [&](int v, int to)
+  {
+    const Place target = placeOfPoint(to);
+    const double* m = surface.Point(to);
+    const std::array<double, 3> start{ point(v)[0], point(v)[1], point(v)[2] };
+    if (places[static_cast<size_t>(v)].Loop != target.Loop)
+    {
+      return false;
+    }
+    const std::vector<int> sides = borderNeighbours(v);
+    if (sides.empty())
+    {
+      return false;
+    }
+    std::vector<double> cutBefore;
+    for (int w : sides)
+    {
+      if (places[static_cast<size_t>(w)].Loop != target.Loop)
+      {
+        return false;
+      }
+      cutBefore.push_back(farthestBetween(
+        places[static_cast<size_t>(v)], places[static_cast<size_t>(w)], point(v), point(w))
+                            .second);
+    }
+    double smallestBefore = 10.0, smallestAfter = 10.0;
+    std::vector<std::array<const double*, 3>> before;
+    std::vector<std::array<double, 3>> normals;
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      std::array<const double*, 3> corners;
+      for (int k = 0; k < 3; ++k)
+      {
+        corners[k] = point(remesh.Triangles[static_cast<size_t>(t)][k]);
+      }
+      before.push_back(corners);
+      smallestBefore = std::min(smallestBefore, SmallestCorner(corners[0], corners[1], corners[2]));
+      std::array<double, 3> n;
+      UnitNormal(corners[0], corners[1], corners[2], n.data());
+      normals.push_back(n);
+    }
+    const double liftBefore = input.Projector.FarthestCentroid(before);
+    std::copy(m, m + 3, point(v));
+    bool kept = true;
+    for (size_t i = 0; i < before.size() && kept; ++i)
+    {
+      const auto& corners = before[i]; // v's entry now points at m
+      double n[3];
+      UnitNormal(corners[0], corners[1], corners[2], n);
+      smallestAfter = std::min(smallestAfter, SmallestCorner(corners[0], corners[1], corners[2]));
+      kept = Dot(n, normals[i].data()) >= 0.5;
+    }
+    kept = kept && smallestAfter >= std::min(smallestBefore, FitCorner) &&
+      input.Projector.FarthestCentroid(before) <= std::max(liftBefore, tolerance);
+    // The farthest the input's border lies from v's border edges must come down (or under the
+    // tolerance): a cut corner may move to the other side, smaller.
+    double cutAfter = 0.0;
+    for (int w : sides)
+    {
+      cutAfter = std::max(
+        cutAfter, farthestBetween(target, places[static_cast<size_t>(w)], m, point(w)).second);
+    }
+    kept = kept &&
+      (cutAfter <= tolerance * tolerance ||
+        cutAfter < *std::max_element(cutBefore.begin(), cutBefore.end()));
+    if (!kept)
+    {
+      std::copy(start.begin(), start.end(), point(v));
+      return false;
+    }
+    places[static_cast<size_t>(v)] = target;
+    const auto [source, corner] = cornerOf.at(to);
+    remesh.SourceTriangles[static_cast<size_t>(v)] = source;
+    for (int j = 0; j < 3; ++j)
+    {
+      remesh.SourceBarycentric[3 * static_cast<size_t>(v) + j] = j == corner ? 1.0 : 0.0;
+    }
+    return true;
+  };
+  const auto onBorderEdge = [&](int a, int b)
+  {
+    int uses = 0;
+    for (int t : around[static_cast<size_t>(a)])
+    {
+      const auto& tri = remesh.Triangles[static_cast<size_t>(t)];
+      uses += std::count(tri.begin(), tri.end(), b) > 0 ? 1 : 0;
+    }
+    return uses == 1;
+  };
+  int splits = 0;
+  // Moves can undo each other's cuts elsewhere: a bound on the edges looked at keeps this finite.
+  for (size_t looks = 20 * work.size() + 100; !work.empty() && looks > 0; --looks)
+  {
+    const auto [t, k] = work.back();
+    work.pop_back();
+    const std::array<int, 3> tri = remesh.Triangles[static_cast<size_t>(t)];
+    const int a = tri[k], b = tri[(k + 1) % 3], c = tri[(k + 2) % 3];
+    const Place pa = places[static_cast<size_t>(a)], pb = places[static_cast<size_t>(b)];
+    if (pa.Loop < 0 || pa.Loop != pb.Loop || !onBorderEdge(a, b))
+    {
+      continue;
+    }
+    const auto [far, farthest2] = farthestBetween(pa, pb, point(a), point(b));
+    if (far < 0 || farthest2 <= tolerance * tolerance)
+    {
+      continue;
+    }
+    // The nearer end moves onto the corner where it can (no vertex more); else the edge splits.
+    const double* m = surface.Point(far);
+    const int nearer = Distance2(m, point(a)) <= Distance2(m, point(b)) ? a : b;
+    if (moveAlongBorder(nearer, far) || moveAlongBorder(nearer == a ? b : a, far))
+    {
+      for (int w : { a, b })
+      {
+        for (int u : around[static_cast<size_t>(w)])
+        {
+          for (int j = 0; j < 3; ++j)
+          {
+            work.emplace_back(u, j); // the border edges among them are looked at again
+          }
+        }
+      }
+      continue;
+    }
+    const double* pointC = point(c);
+    double before[3], first[3], second[3];
+    UnitNormal(point(a), point(b), pointC, before);
+    UnitNormal(point(a), m, pointC, first);
+    UnitNormal(m, point(b), pointC, second);
+    if (SmallestCorner(point(a), m, pointC) < FitCorner ||
+      SmallestCorner(m, point(b), pointC) < FitCorner || Dot(before, first) < 0.5 ||
+      Dot(before, second) < 0.5 ||
+      input.Projector.FarthestCentroid({ { point(a), m, pointC }, { m, point(b), pointC } }) >
+        std::max(input.Projector.FarthestCentroid({ { point(a), point(b), pointC } }), tolerance))
+    {
+      continue;
+    }
+    const int n = static_cast<int>(remesh.SiteIds.size());
+    remesh.Points.insert(remesh.Points.end(), m, m + 3);
+    remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
+    const auto [source, corner] = cornerOf.at(far);
+    remesh.SourceTriangles.push_back(source);
+    for (int j = 0; j < 3; ++j)
+    {
+      remesh.SourceBarycentric.push_back(j == corner ? 1.0 : 0.0);
+    }
+    pinned.push_back(1);
+    places.push_back(placeOfPoint(far));
+    std::array<int, 3> firstTriangle = tri, secondTriangle = tri;
+    firstTriangle[static_cast<size_t>((k + 1) % 3)] = n; // a m c
+    secondTriangle[static_cast<size_t>(k)] = n;          // m b c
+    remesh.Triangles[static_cast<size_t>(t)] = firstTriangle;
+    remesh.Triangles.push_back(secondTriangle);
+    const int added = static_cast<int>(remesh.Triangles.size()) - 1;
+    auto& aroundB = around[static_cast<size_t>(b)];
+    aroundB.erase(std::find(aroundB.begin(), aroundB.end(), t));
+    aroundB.push_back(added);
+    around[static_cast<size_t>(c)].push_back(added);
+    around.push_back({ t, added });
+    work.emplace_back(t, k);
+    work.emplace_back(added, k);
+    ++splits;
+  }
+  return splits;
+}
+
 /// Per input point (`probes`): the remesh triangle nearest to it (-1 if none) among those
 /// ProbeNeighbourhoods measure it against, the nearest point's barycentric weights there, and
 /// its distance to the remesh, signed along the triangle's normal (positive outside).
@@ -1775,6 +2118,7 @@ RemeshInput::RemeshInput(const SurfaceMesh& surface)
   , Projector(surface)
   , Probes(CoveringPoints(surface, FarFromInput * Diagonal))
   , Areas(ProbeAreas(surface, Probes))
+  , Loops(ComputeMeshTopology(surface.NumberOfPoints(), surface.Triangles).Loops)
 {
 }
 
@@ -1835,6 +2179,7 @@ Remesh BuildRemeshAgainst(
   const double tolerance = FarFromInput * input->Diagonal;
   const std::vector<double>& probes = input->Probes;
   remesh.FittedVertices = FitToSurface(remesh, pinned, probes, projector, tolerance);
+  remesh.BorderCorners = FollowInputBorder(remesh, pinned, *input, tolerance);
   // Collapses change valences and moves change angles: flips the first pass could not take.
   remesh.ValenceFlips += FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);
   remesh.StraddlingVertices =

@@ -34,6 +34,7 @@ struct Remesh
   int FittedVertices = 0;    // free vertices moved towards input tips and ridges the remesh cut off
   int StraddlingVertices = 0; // free vertices moved along their normals to straddle the input
   int OpenedHoles = 0;        // triangles taken out where the input has a hole the cells covered
+  int BorderCorners = 0;      // vertices added on input border corners the remesh's border cut off
 };
 
 /// The input surface as remeshes are shaped and measured against it (BuildRemesh,
@@ -50,6 +51,7 @@ struct CVTNUMERICS_EXPORT RemeshInput
   SurfaceProjector Projector;
   std::vector<double> Probes; // CoveringPoints
   std::vector<double> Areas;  // the area each probe stands for (none for those off its points)
+  std::vector<std::vector<int>> Loops; // its boundary loops (MeshTopology::Loops)
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
@@ -70,9 +72,11 @@ struct CVTNUMERICS_EXPORT RemeshInput
 /// Then free vertices move towards input points (its vertices, and points along its long edges)
 /// that lie farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and ridges
 /// thinner than the cells), where that brings them closer without a corner under 27 degrees.
-/// Last, where the remesh still lies farther than that from the input either way, free vertices
-/// off creases and the border move along their normals so that it straddles the input (a
-/// least-squares step), where that brings the remesh round them no farther from it.
+/// Border edges whose input boundary between their ends lies farther than that from them are split
+/// at its farthest point (a vertex on the input's border corner), while the new triangles keep
+/// corners of 27 degrees. Last, where the remesh still lies farther than 0.8% from the input either
+/// way, free vertices off creases and the border move along their normals so that it straddles
+/// the input (a least-squares step), where that brings the remesh round them no farther from it.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(
   const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole, const RemeshInput& input);
 /// The same without the input (no shaping against it) or, given `surface`, with a RemeshInput

@@ -1175,22 +1175,55 @@ double FarthestPoint(const std::vector<double>& fromPoints,
   return farthest;
 }
 
-/// The dual of `sites` CVT sites on `sphere`, after 60 L-BFGS iterations.
-cvt::RestrictedDual SphereDual(const cvt::SurfaceMesh& sphere, int sites)
+/// The dual of `sites` CVT sites on `mesh`, after 60 L-BFGS iterations.
+cvt::RestrictedDual MeshDual(const cvt::SurfaceMesh& mesh, int sites)
 {
   cvt::RestrictedVoronoi engine;
-  EXPECT_TRUE(engine.SetMesh(sphere));
+  EXPECT_TRUE(engine.SetMesh(mesh));
   cvt::OptimizerOptions options;
   options.MaximumNumberOfIterations = 60;
   cvt::OptimizerResult result;
   std::string error;
   cvt::RestrictedProblem problem(engine);
   EXPECT_TRUE(cvt::RunLBFGS(
-    problem, { cvt::SampleMeshSites(sphere, sites, 4), {} }, options, nullptr, result, error))
+    problem, { cvt::SampleMeshSites(mesh, sites, 4), {} }, options, nullptr, result, error))
     << error;
   cvt::RestrictedDual dual;
   EXPECT_TRUE(engine.ComputeDual(dual));
   return dual;
+}
+
+TEST(RestrictedVoronoi, RemeshBorderFollowsTheCornersOfTheInputsBorder)
+{
+  // A unit square whose lower border is a sawtooth, teeth 0.05 apart and 0.03 deep (2.1% of the
+  // diagonal), under cells about 0.13 across: the border edges between the cells' border points
+  // cut corners and teeth off, until their ends move onto them or they split there.
+  cvt::SurfaceMesh saw = FlatSquare(40, 0.0, 1.0);
+  for (int i = 1; i < 40; i += 2)
+  {
+    saw.Points[3 * static_cast<size_t>(i) + 1] = -0.03;
+  }
+  const cvt::RestrictedDual dual = MeshDual(saw, 60);
+  const double diagonal = cvt::BoundingBoxDiagonal(saw);
+  const cvt::Remesh cut = cvt::BuildRemesh(dual, 1);
+  const cvt::RemeshInput input(saw);
+  const cvt::Remesh following = cvt::BuildRemesh(dual, 1, 8, input);
+  const double before =
+    FarthestPoint(saw.Points, saw.Triangles, cut.Points, cut.Triangles, 4) / diagonal;
+  const double after =
+    FarthestPoint(saw.Points, saw.Triangles, following.Points, following.Triangles, 4) / diagonal;
+  // The square's corners, cut 3.4% of the diagonal deep, get vertices or come closer; between
+  // vertices on tooth tips, the edges run along the tips. Teeth narrower than the cells between
+  // a corner and a tip stay cut: splits there would leave corners under 27 degrees.
+  EXPECT_GT(before, 0.03);
+  EXPECT_LT(after, 0.65 * before);
+  EXPECT_EQ(
+    cvt::ComputeMeshTopology(static_cast<int>(following.SiteIds.size()), following.Triangles)
+      .BoundaryLoops,
+    1);
+  EXPECT_GE(SmallestAngle(following), 27.0);
+  std::cout << "[ measured ] sawtooth border: input to remesh " << before << " -> " << after
+            << " of the diagonal, " << following.BorderCorners << " border vertices added\n";
 }
 
 TEST(RestrictedVoronoi, FidelityFindsTheInputPointsTheRemeshCutsOff)
@@ -1240,8 +1273,8 @@ TEST(RestrictedVoronoi, SphereRemeshStraddlesTheInput)
   // sphere: the farthest distance either way falls, and the vertices' source points stay on
   // the input. With 300 sites the remesh lies within 0.8% everywhere, and stays.
   const cvt::SurfaceMesh sphere = Sphere(4);
-  EXPECT_EQ(cvt::BuildRemesh(SphereDual(sphere, 300), 0, 8, &sphere).StraddlingVertices, 0);
-  const cvt::RestrictedDual dual = SphereDual(sphere, 60);
+  EXPECT_EQ(cvt::BuildRemesh(MeshDual(sphere, 300), 0, 8, &sphere).StraddlingVertices, 0);
+  const cvt::RestrictedDual dual = MeshDual(sphere, 60);
   const cvt::Remesh inscribed = cvt::BuildRemesh(dual, 0);
   const cvt::Remesh straddling = cvt::BuildRemesh(dual, 0, 8, &sphere);
   EXPECT_EQ(inscribed.StraddlingVertices, 0);
