@@ -761,7 +761,7 @@ bool vtkCVTRemeshFilter::Compute(
   // The remesh kept has the input's topology and the fewest such parts, else the closest
   // topology.
   TopologyRefinement best;
-  const cvt::RemeshInput target(mesh);
+  const cvt::RemeshInput target(mesh, &inputTopology);
   if (!RefineForTopology(
         engine, target, inputTopology, result.Sites, [this]() { return this->StopRequested(); },
         best, error))

@@ -47,6 +47,18 @@ inline void UnitNormal(const double* a, const double* b, const double* c, double
   }
 }
 
+/// The centroid of triangle abc and the distance from it to its farthest corner: a ball that holds
+/// the triangle, for skipping triangles too far to matter.
+inline double BoundingBall(const double* a, const double* b, const double* c, double centroid[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    centroid[k] = (a[k] + b[k] + c[k]) / 3.0;
+  }
+  return std::sqrt(
+    std::max({ Distance2(centroid, a), Distance2(centroid, b), Distance2(centroid, c) }));
+}
+
 /// The squared distance from p to the segment ab.
 inline double Distance2ToSegment(const double* p, const double* a, const double* b)
 {

@@ -941,11 +941,14 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
 }
 
 /// Where the remesh's border cuts off corners of the input's border (a sawtooth edge, notches
-/// narrower than the cells): each border edge of the remesh whose endpoints lie on one input
-/// boundary loop is split at the loop point between them farthest from it, while that point is
-/// farther than `tolerance` and the two new triangles keep their corners at FitCorner or more and
-/// turn by less than 60 degrees from the one they replace (the split edges are looked at again).
-/// The new vertices are pinned, on input points. Returns the number of vertices added.
+/// narrower than the cells): for each border edge of the remesh whose endpoints lie on one input
+/// boundary loop and that lies farther than `tolerance` from the loop point between them farthest
+/// from it, the nearer end (else the other) moves along the border onto that point where its
+/// triangles keep their side, their corners (FitCorner, or what they had) and their distance
+/// from the input and its border edges cut less of the loop off; else the edge is split there
+/// where the two new triangles keep their corners at FitCorner, turn by less than 60 degrees from
+/// the one they replace and lie no farther from the input. Changed edges are looked at again. The
+/// new vertices are pinned, on input points. Returns the number of vertices added.
 int FollowInputBorder(
   Remesh& remesh, std::vector<char>& pinned, const RemeshInput& input, double tolerance)
 {
@@ -954,29 +957,8 @@ int FollowInputBorder(
   {
     return 0;
   }
-  // Each loop point's place (loop, index) and a triangle it is a corner of.
-  std::unordered_map<int, std::pair<int, int>> onLoop;
-  std::vector<std::vector<double>> lengths;
-  for (size_t l = 0; l < input.Loops.size(); ++l)
-  {
-    for (size_t i = 0; i < input.Loops[l].size(); ++i)
-    {
-      onLoop.emplace(input.Loops[l][i], std::make_pair(static_cast<int>(l), static_cast<int>(i)));
-    }
-    lengths.push_back(LoopLengths(surface.Points, input.Loops[l]));
-  }
-  std::unordered_map<int, std::pair<int, int>> cornerOf; // loop point: (triangle, corner)
-  for (int t = 0; t < surface.NumberOfTriangles(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const int p = surface.Triangles[static_cast<size_t>(t)][k];
-      if (onLoop.count(p))
-      {
-        cornerOf.emplace(p, std::make_pair(t, k));
-      }
-    }
-  }
+  const std::unordered_map<int, RemeshInput::LoopPoint>& onLoop = input.OnLoop;
+  const std::vector<std::vector<double>>& lengths = input.LoopLengths;
   // A remesh vertex's place along a loop, from its input triangle and weights: on a border edge
   // of that triangle (a weight 0) whose points follow each other on a loop.
   struct Place
@@ -999,8 +981,8 @@ int FollowInputBorder(
       const auto at = onLoop.find(tri[k]);
       if (w[k] > 1.0 - 1e-9 && at != onLoop.end()) // on a loop point
       {
-        place.Loop = at->second.first;
-        place.Along = lengths[static_cast<size_t>(place.Loop)][at->second.second];
+        place.Loop = at->second.Loop;
+        place.Along = lengths[static_cast<size_t>(place.Loop)][at->second.Index];
         return place;
       }
     }
@@ -1009,15 +991,15 @@ int FollowInputBorder(
       const auto from = onLoop.find(tri[k]);
       const auto to = onLoop.find(tri[(k + 1) % 3]);
       if (std::abs(w[(k + 2) % 3]) > 1e-9 || from == onLoop.end() || to == onLoop.end() ||
-        from->second.first != to->second.first)
+        from->second.Loop != to->second.Loop)
       {
         continue;
       }
-      const int loop = from->second.first;
+      const int loop = from->second.Loop;
       const int size = static_cast<int>(input.Loops[static_cast<size_t>(loop)].size());
       const double share = w[(k + 1) % 3];
       const std::vector<double>& length = lengths[static_cast<size_t>(loop)];
-      const int i = from->second.second, j = to->second.second;
+      const int i = from->second.Index, j = to->second.Index;
       if ((i + 1) % size == j)
       {
         place.Loop = loop;
@@ -1085,9 +1067,18 @@ int FollowInputBorder(
   };
   const auto placeOfPoint = [&](int p)
   {
-    const auto& at = onLoop.at(p);
-    return Place{ at.first,
-      lengths[static_cast<size_t>(at.first)][static_cast<size_t>(at.second)] };
+    const RemeshInput::LoopPoint& at = onLoop.at(p);
+    return Place{ at.Loop, lengths[static_cast<size_t>(at.Loop)][static_cast<size_t>(at.Index)] };
+  };
+  // Vertex v put on loop point p: its source is p's corner of a triangle.
+  const auto setSource = [&](size_t v, int p)
+  {
+    const RemeshInput::LoopPoint& at = onLoop.at(p);
+    remesh.SourceTriangles[v] = at.Triangle;
+    for (int j = 0; j < 3; ++j)
+    {
+      remesh.SourceBarycentric[3 * v + static_cast<size_t>(j)] = j == at.Corner ? 1.0 : 0.0;
+    }
   };
   const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
   std::vector<std::vector<int>> around = TrianglesAroundVertices(remesh);
@@ -1188,23 +1179,8 @@ int FollowInputBorder(
       return false;
     }
     places[static_cast<size_t>(v)] = target;
-    const auto [source, corner] = cornerOf.at(to);
-    remesh.SourceTriangles[static_cast<size_t>(v)] = source;
-    for (int j = 0; j < 3; ++j)
-    {
-      remesh.SourceBarycentric[3 * static_cast<size_t>(v) + j] = j == corner ? 1.0 : 0.0;
-    }
+    setSource(static_cast<size_t>(v), to);
     return true;
-  };
-  const auto onBorderEdge = [&](int a, int b)
-  {
-    int uses = 0;
-    for (int t : around[static_cast<size_t>(a)])
-    {
-      const auto& tri = remesh.Triangles[static_cast<size_t>(t)];
-      uses += std::count(tri.begin(), tri.end(), b) > 0 ? 1 : 0;
-    }
-    return uses == 1;
   };
   int splits = 0;
   // Moves can undo each other's cuts elsewhere: a bound on the edges looked at keeps this finite.
@@ -1215,9 +1191,14 @@ int FollowInputBorder(
     const std::array<int, 3> tri = remesh.Triangles[static_cast<size_t>(t)];
     const int a = tri[k], b = tri[(k + 1) % 3], c = tri[(k + 2) % 3];
     const Place pa = places[static_cast<size_t>(a)], pb = places[static_cast<size_t>(b)];
-    if (pa.Loop < 0 || pa.Loop != pb.Loop || !onBorderEdge(a, b))
+    if (pa.Loop < 0 || pa.Loop != pb.Loop)
     {
       continue;
+    }
+    const std::vector<int> sidesOfA = borderNeighbours(a);
+    if (std::find(sidesOfA.begin(), sidesOfA.end(), b) == sidesOfA.end())
+    {
+      continue; // no longer a border edge (a split or move changed it)
     }
     const auto [far, farthest2] = farthestBetween(pa, pb, point(a), point(b));
     if (far < 0 || farthest2 <= tolerance * tolerance)
@@ -1257,12 +1238,9 @@ int FollowInputBorder(
     const int n = static_cast<int>(remesh.SiteIds.size());
     remesh.Points.insert(remesh.Points.end(), m, m + 3);
     remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
-    const auto [source, corner] = cornerOf.at(far);
-    remesh.SourceTriangles.push_back(source);
-    for (int j = 0; j < 3; ++j)
-    {
-      remesh.SourceBarycentric.push_back(j == corner ? 1.0 : 0.0);
-    }
+    remesh.SourceTriangles.push_back(-1);
+    remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), 3, 0.0);
+    setSource(static_cast<size_t>(n), far);
     pinned.push_back(1);
     places.push_back(placeOfPoint(far));
     std::array<int, 3> firstTriangle = tri, secondTriangle = tri;
@@ -1307,16 +1285,7 @@ void MeasureProbes(const Remesh& remesh, const std::vector<double>& probes,
   for (size_t t = 0; t < balls.size(); ++t)
   {
     const std::array<int, 3>& c = remesh.Triangles[t];
-    double radius2 = 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      balls[t][k] = (point(c[0])[k] + point(c[1])[k] + point(c[2])[k]) / 3.0;
-    }
-    for (int v : c)
-    {
-      radius2 = std::max(radius2, Distance2(balls[t].data(), point(v)));
-    }
-    balls[t][3] = std::sqrt(radius2);
+    balls[t][3] = BoundingBall(point(c[0]), point(c[1]), point(c[2]), balls[t].data());
   }
   vtkSMPTools::For(0, static_cast<vtkIdType>(near.size()),
     [&](vtkIdType begin, vtkIdType end)
@@ -2112,14 +2081,38 @@ void SplitPinchedVertices(Remesh& remesh)
 }
 } // namespace
 
-RemeshInput::RemeshInput(const SurfaceMesh& surface)
+RemeshInput::RemeshInput(const SurfaceMesh& surface, const MeshTopology* topology)
   : Surface(surface)
   , Diagonal(BoundingBoxDiagonal(surface))
   , Projector(surface)
   , Probes(CoveringPoints(surface, FarFromInput * Diagonal))
   , Areas(ProbeAreas(surface, Probes))
-  , Loops(ComputeMeshTopology(surface.NumberOfPoints(), surface.Triangles).Loops)
+  , Loops(topology ? topology->Loops
+                   : ComputeMeshTopology(surface.NumberOfPoints(), surface.Triangles).Loops)
 {
+  for (size_t l = 0; l < this->Loops.size(); ++l)
+  {
+    for (size_t i = 0; i < this->Loops[l].size(); ++i)
+    {
+      LoopPoint place;
+      place.Loop = static_cast<int>(l);
+      place.Index = static_cast<int>(i);
+      this->OnLoop.emplace(this->Loops[l][i], place);
+    }
+    this->LoopLengths.push_back(cvt::LoopLengths(surface.Points, this->Loops[l]));
+  }
+  for (int t = 0; t < surface.NumberOfTriangles() && !this->OnLoop.empty(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto at = this->OnLoop.find(surface.Triangles[static_cast<size_t>(t)][k]);
+      if (at != this->OnLoop.end() && at->second.Triangle < 0)
+      {
+        at->second.Triangle = t;
+        at->second.Corner = k;
+      }
+    }
+  }
 }
 
 namespace

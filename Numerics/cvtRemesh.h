@@ -10,6 +10,7 @@
 #include "cvtSurfaceProjector.h"
 
 #include <array>
+#include <unordered_map>
 #include <vector>
 
 namespace cvt
@@ -42,16 +43,28 @@ struct Remesh
 /// diagonal apart. Made once per input: on large inputs they cost as much as shaping a remesh.
 struct CVTNUMERICS_EXPORT RemeshInput
 {
-  explicit RemeshInput(const SurfaceMesh& surface); // which must outlive this
+  /// `surface` must outlive this; its `topology` is computed when not given.
+  explicit RemeshInput(const SurfaceMesh& surface, const MeshTopology* topology = nullptr);
   RemeshInput(const RemeshInput&) = delete;
   RemeshInput& operator=(const RemeshInput&) = delete;
+
+  /// Where a point of a boundary loop lies on it, and a triangle it is a corner of.
+  struct LoopPoint
+  {
+    int Loop = -1;
+    int Index = -1; // in Loops[Loop]
+    int Triangle = -1;
+    int Corner = -1; // of Triangle
+  };
 
   const SurfaceMesh& Surface;
   double Diagonal;
   SurfaceProjector Projector;
   std::vector<double> Probes; // CoveringPoints
   std::vector<double> Areas;  // the area each probe stands for (none for those off its points)
-  std::vector<std::vector<int>> Loops; // its boundary loops (MeshTopology::Loops)
+  std::vector<std::vector<int>> Loops;          // its boundary loops (MeshTopology::Loops)
+  std::vector<std::vector<double>> LoopLengths; // of each loop (cvt::LoopLengths)
+  std::unordered_map<int, LoopPoint> OnLoop;    // per point of a loop
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
@@ -72,11 +85,12 @@ struct CVTNUMERICS_EXPORT RemeshInput
 /// Then free vertices move towards input points (its vertices, and points along its long edges)
 /// that lie farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and ridges
 /// thinner than the cells), where that brings them closer without a corner under 27 degrees.
-/// Border edges whose input boundary between their ends lies farther than that from them are split
-/// at its farthest point (a vertex on the input's border corner), while the new triangles keep
-/// corners of 27 degrees. Last, where the remesh still lies farther than 0.8% from the input either
-/// way, free vertices off creases and the border move along their normals so that it straddles
-/// the input (a least-squares step), where that brings the remesh round them no farther from it.
+/// Border edges whose input boundary between their ends lies farther than that from them get an end
+/// moved along the border onto its farthest point (a corner of the input's border) where that cuts
+/// less of it off, else are split there, while the triangles keep corners of 27 degrees. Last,
+/// where the remesh still lies farther than 0.8% from the input either way, free vertices off
+/// creases and the border move along their normals so that it straddles the input (a least-squares
+/// step), where that brings the remesh round them no farther from it.
 CVTNUMERICS_EXPORT Remesh BuildRemesh(
   const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole, const RemeshInput& input);
 /// The same without the input (no shaping against it) or, given `surface`, with a RemeshInput

@@ -103,17 +103,6 @@ private:
   int TestedCount = 0;
   double Bound2 = std::numeric_limits<double>::infinity();
 };
-/// How far the farthest corner of triangle abc lies from its centroid.
-double BoundingRadius(const double* a, const double* b, const double* c)
-{
-  double centroid[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    centroid[k] = (a[k] + b[k] + c[k]) / 3.0;
-  }
-  return std::sqrt(
-    std::max({ Distance2(centroid, a), Distance2(centroid, b), Distance2(centroid, c) }));
-}
 } // namespace
 
 struct SurfaceProjector::Internals
@@ -126,12 +115,13 @@ SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
   , Internal(new Internals)
 {
   const int triangles = surface.NumberOfTriangles();
+  std::vector<double> centroids(3 * static_cast<size_t>(triangles));
   std::vector<double> radii(static_cast<size_t>(triangles));
   for (int t = 0; t < triangles; ++t)
   {
     const auto& tri = surface.Triangles[static_cast<size_t>(t)];
-    radii[static_cast<size_t>(t)] =
-      BoundingRadius(surface.Point(tri[0]), surface.Point(tri[1]), surface.Point(tri[2]));
+    radii[static_cast<size_t>(t)] = BoundingBall(surface.Point(tri[0]), surface.Point(tri[1]),
+      surface.Point(tri[2]), &centroids[3 * static_cast<size_t>(t)]);
   }
   // Triangles far larger than most (CAD faces, long slivers) enter the trees as pieces no larger
   // than twice the median triangle nor than 1% of the diagonal (about the distances the remesh is
@@ -145,8 +135,7 @@ SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
     pieceRadius = std::min(pieceRadius, 2.0 * sorted[static_cast<size_t>(triangles / 2)]);
   }
   std::map<int, std::unique_ptr<SizeClass>> bySize; // radii a factor 4 apart
-  const auto add = [&bySize](
-                     int t, const double* a, const double* b, const double* c, double radius)
+  const auto add = [&bySize](int t, const double* centroid, double radius)
   {
     std::unique_ptr<SizeClass>& sizeClass = bySize[radius > 0.0 ? std::ilogb(radius) / 2 : 0];
     if (!sizeClass)
@@ -154,10 +143,7 @@ SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
       sizeClass.reset(new SizeClass);
     }
     sizeClass->Triangles.push_back(t);
-    for (int k = 0; k < 3; ++k)
-    {
-      sizeClass->Centroids.push_back((a[k] + b[k] + c[k]) / 3.0);
-    }
+    sizeClass->Centroids.insert(sizeClass->Centroids.end(), centroid, centroid + 3);
     sizeClass->Radii.push_back(radius);
     sizeClass->Radius = std::max(sizeClass->Radius, radius);
   };
@@ -170,7 +156,7 @@ SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
     const double radius = radii[static_cast<size_t>(t)];
     if (!(radius > pieceRadius))
     {
-      add(t, a, b, c, radius);
+      add(t, &centroids[3 * static_cast<size_t>(t)], radius);
       continue;
     }
     // m x m pieces on the barycentric grid, each about 1/m of the triangle across.
@@ -184,16 +170,19 @@ SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
       }
       return q;
     };
+    double centroid[3];
     for (int i = 0; i < m; ++i)
     {
       for (int j = 0; i + j < m; ++j)
       {
         const auto p0 = at(i, j), p1 = at(i + 1, j), p2 = at(i, j + 1);
-        add(t, p0.data(), p1.data(), p2.data(), BoundingRadius(p0.data(), p1.data(), p2.data()));
+        const double upright = BoundingBall(p0.data(), p1.data(), p2.data(), centroid);
+        add(t, centroid, upright);
         if (i + j + 2 <= m)
         {
           const auto p3 = at(i + 1, j + 1);
-          add(t, p1.data(), p3.data(), p2.data(), BoundingRadius(p1.data(), p3.data(), p2.data()));
+          const double inverted = BoundingBall(p1.data(), p3.data(), p2.data(), centroid);
+          add(t, centroid, inverted);
         }
       }
     }
