@@ -2331,13 +2331,26 @@ RemeshFidelity MeasureFidelity(
     });
   fidelity.InputToRemesh = *std::max_element(distance.begin(), distance.end()) / diagonal;
   fidelity.RemeshToInput = *std::max_element(lift.begin(), lift.end()) / diagonal;
-  // The far points, farthest first, none within twice its distance of one taken before.
-  std::vector<std::pair<double, int>> order;
+  // The far points, farthest first, none within twice its distance of one taken before: input
+  // points far from the remesh, and the input points nearest to remesh points far from the input
+  // (a triangle bridging a fold, numbered after the probes).
+  std::vector<std::pair<double, size_t>> order;
   for (size_t p = 0; p < distance.size(); ++p)
   {
     if (distance[p] > tolerance)
     {
-      order.emplace_back(distance[p], static_cast<int>(p));
+      order.emplace_back(distance[p], p);
+    }
+  }
+  std::vector<double> feet; // of the remesh points far from the input
+  for (size_t p = 0; p < lift.size(); ++p)
+  {
+    if (lift[p] > tolerance)
+    {
+      double foot[3], weights[3];
+      input.Projector.Nearest(&remeshPoints[3 * p], foot, weights);
+      order.emplace_back(lift[p], distance.size() + feet.size() / 3);
+      feet.insert(feet.end(), foot, foot + 3);
     }
   }
   std::sort(order.begin(), order.end(), std::greater<>());
@@ -2347,7 +2360,7 @@ RemeshFidelity MeasureFidelity(
     {
       break;
     }
-    const double* at = &probes[3 * static_cast<size_t>(p)];
+    const double* at = p < distance.size() ? &probes[3 * p] : &feet[3 * (p - distance.size())];
     bool crowded = false;
     for (size_t q = 0; q < fidelity.FarPoints.size() && !crowded; q += 3)
     {

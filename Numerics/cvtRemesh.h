@@ -114,14 +114,15 @@ struct RemeshFidelity
 {
   double InputToRemesh = 0.0;    // the farthest input point from the remesh, share of the diagonal
   double RemeshToInput = 0.0;    // the farthest remesh point from the input, likewise
-  std::vector<double> FarPoints; // input points beyond the share asked for (see MeasureFidelity)
+  std::vector<double> FarPoints; // input points where either is beyond the share asked for
 };
 
 /// How far `remesh` and `input` lie from each other (each measured at its CoveringPoints 0.8%
-/// of the input's diagonal apart, against the other's triangles near them), and the
-/// input points farther than `share` of the diagonal from the remesh (tips and creases its
-/// triangles cut off), farthest first, none within twice its distance of one before it, at most
-/// `maximumPoints` of them.
+/// of the input's diagonal apart, against the other's triangles near them), and where they lie
+/// farther than `share` of the diagonal apart: the input points that far from the remesh (tips
+/// and creases its triangles cut off) and the input points nearest to remesh points that far
+/// from the input (triangles bridging a fold), farthest first, none within twice its distance of
+/// one before it, at most `maximumPoints` of them.
 CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(
   const Remesh& remesh, const RemeshInput& input, double share, size_t maximumPoints);
 

@@ -1264,6 +1264,34 @@ TEST(RestrictedVoronoi, FidelityFindsTheInputPointsTheRemeshCutsOff)
             << ") remesh to input, " << f.FarPoints.size() / 3 << " far points\n";
 }
 
+TEST(RestrictedVoronoi, FidelityFindsWhereTheRemeshLiesFarFromTheInput)
+{
+  // A remesh of a flat square, 0.01 apart, with one vertex lifted 0.05 into a narrow spike: every
+  // input point lies within 0.01 of it (the spike's steep sides pass over the points below), but
+  // the spike lies 3.5% of the diagonal from the input. The input point under its tip is the
+  // first far point.
+  const cvt::SurfaceMesh square = FlatSquare(10, 0.0, 1.0);
+  cvt::Remesh spiked;
+  const cvt::SurfaceMesh fine = FlatSquare(100, 0.0, 1.0);
+  spiked.Points = fine.Points;
+  spiked.Triangles = fine.Triangles;
+  const size_t tip = 50 * 101 + 50;
+  spiked.Points[3 * tip + 2] = 0.05;
+  const double diagonal = cvt::BoundingBoxDiagonal(square);
+  const cvt::RemeshInput input(square);
+  const cvt::RemeshFidelity f = cvt::MeasureFidelity(spiked, input, 0.009, 10);
+  const double inputToRemesh =
+    FarthestPoint(square.Points, square.Triangles, spiked.Points, spiked.Triangles, 3) / diagonal;
+  EXPECT_LT(inputToRemesh, 0.009);
+  EXPECT_NEAR(f.InputToRemesh, inputToRemesh, 0.002);
+  EXPECT_NEAR(f.RemeshToInput, 0.05 / diagonal, 1e-9);
+  ASSERT_GE(f.FarPoints.size(), 3u);
+  const double under[3] = { 0.5, 0.5, 0.0 };
+  EXPECT_LT(cvt::Distance2(f.FarPoints.data(), under), 1e-18);
+  // Farther than twice their distance apart: the spike's other far points are below 0.009 * 2.
+  EXPECT_EQ(f.FarPoints.size(), 3u);
+}
+
 TEST(RestrictedVoronoi, SphereRemeshStraddlesTheInput)
 {
   // The remesh of 60 sites on a sphere, with its vertices at the sites' surface points, lies
