@@ -165,7 +165,7 @@ int RunRemesh(const Options& options)
               << (Field(sites, "AddedSitesSettled") > 0 ? ", settled under their cells' sizes" : "")
               << ")\n"
               << "  sites added far from remesh " << Field(sites, "FarPointSites")
-              << " (at input points over 0.9% of the diagonal from it)\n"
+              << " (where input and remesh lie over 0.9% of the diagonal apart)\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "
