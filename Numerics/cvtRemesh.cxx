@@ -756,18 +756,21 @@ ProbeNeighbourhoods::ProbeNeighbourhoods(const Remesh& remesh, const std::vector
   }
 }
 
-/// Moves free vertices towards the input points (`probes`, see CoveringPoints) that lie farthest
-/// from the remesh, where those are farther than `tolerance`: a tip or ridge thinner than the cells
-/// (a toe, an ear) lies in one or two cells, whose flat triangles cut it off. Each input point is
-/// measured against the triangles round its nearest remesh vertex and round that vertex's
-/// neighbours. A free vertex off the border whose own points reach beyond `tolerance` tries the
-/// surface points nearest to the farthest of them and to places a quarter, half and three quarters
-/// of the way there, the farthest first; it takes the first that brings its own points 10% closer,
-/// takes no point within two edges farther than the farthest was, keeps its triangles' corners at
-/// 27 degrees or more (FitCorner; or no smaller than before), turns none of them over and lifts
-/// their centroids no farther from the input than `tolerance` (or than before). Up to three passes,
-/// the later ones round the vertices moved. The connectivity, and so the valences, stay. Returns
-/// the number of vertices moved.
+/// Moves vertices off the border towards the input points (`probes`, see CoveringPoints) that lie
+/// farthest from the remesh, where those are farther than `tolerance`: a tip or ridge thinner than
+/// the cells (a toe, an ear) lies in one or two cells, whose flat triangles cut it off, and so does
+/// the far crease of a CAD model's band narrower than the cells (a chamfer, a step, a blade's rim)
+/// whose vertices all lie on its near crease. Each input point is measured against the triangles
+/// round its nearest remesh vertex and round that vertex's neighbours. A vertex off the border
+/// (free or pinned to a crease) whose own points reach beyond `tolerance` tries the surface points
+/// nearest to the farthest of them and to places a quarter, half and three quarters of the way
+/// there, the farthest first; it takes the first that brings its own points 10% closer, takes no
+/// point within two edges farther than the farthest was, keeps its triangles' corners at 27
+/// degrees or more (FitCorner; or no smaller than before), turns none of them over and lifts their
+/// centroids no farther from the input than `tolerance` (or than before); a crease vertex's
+/// triangles also at points a quarter of an edge apart, as the crease it leaves lies under them
+/// between their centroids. Up to three passes, the later ones round the vertices moved. The
+/// connectivity, and so the valences, stay. Returns the number of vertices moved.
 int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vector<double>& probes,
   const SurfaceProjector& projector, double tolerance)
 {
@@ -839,6 +842,35 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
     lift = projector.FarthestCentroid(corners);
     return true;
   };
+  // How far v's triangles lie from the input at points a quarter of an edge apart: a vertex
+  // pinned to a crease that moves off it must not leave the crease's other side under a
+  // triangle lifted farther than its centroid and edge middles show.
+  const auto closeLift = [&](int v)
+  {
+    double lift = 0.0;
+    for (int t : around[static_cast<size_t>(v)])
+    {
+      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+      for (int i = 0; i <= 4; ++i)
+      {
+        for (int j = 0; i + j <= 4; ++j)
+        {
+          const int k = 4 - i - j;
+          if (i == 4 || j == 4 || k == 4)
+          {
+            continue; // a corner, on the input
+          }
+          double at[3];
+          for (int c = 0; c < 3; ++c)
+          {
+            at[c] = (i * point(tri[0])[c] + j * point(tri[1])[c] + k * point(tri[2])[c]) / 4.0;
+          }
+          lift = std::max(lift, projector.DistanceTo(at));
+        }
+      }
+    }
+    return lift;
+  };
   int moved = 0;
   // Vertices to look at: all, then those within two edges of a vertex moved in the pass before.
   std::vector<char> changed(static_cast<size_t>(vertices), 1);
@@ -849,8 +881,8 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
     for (int v = 0; v < vertices; ++v)
     {
       int far = -1;
-      if (changed[static_cast<size_t>(v)] && !pinned[static_cast<size_t>(v)] &&
-        !onBorder[static_cast<size_t>(v)] && !around[static_cast<size_t>(v)].empty())
+      if (changed[static_cast<size_t>(v)] && !onBorder[static_cast<size_t>(v)] &&
+        !around[static_cast<size_t>(v)].empty())
       {
         const double distance = farthest({ v }, far);
         if (distance > tolerance)
@@ -883,6 +915,19 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
       double smallestBefore = 0.0, liftBefore = 0.0;
       const std::array<double, 3> start{ point(v)[0], point(v)[1], point(v)[2] };
       fan(v, start.data(), smallestBefore, liftBefore);
+      const bool onCrease = pinned[static_cast<size_t>(v)] != 0;
+      double closeLiftBefore = -1.0; // measured when a move gets that far
+      const auto closeEnough = [&]()
+      {
+        if (closeLiftBefore < 0.0)
+        {
+          const std::array<double, 3> at{ point(v)[0], point(v)[1], point(v)[2] };
+          std::copy(start.begin(), start.end(), point(v));
+          closeLiftBefore = closeLift(v);
+          std::copy(at.begin(), at.end(), point(v));
+        }
+        return closeLift(v) <= std::max(closeLiftBefore, tolerance);
+      };
       const int startTriangle = remesh.SourceTriangles[static_cast<size_t>(v)];
       const std::array<double, 3> startWeights{
         remesh.SourceBarycentric[3 * static_cast<size_t>(v)],
@@ -907,7 +952,7 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
         if (fan(v, start.data(), smallest, lift) &&
           smallest >= std::min(smallestBefore, FitCorner) &&
           lift <= std::max(liftBefore, tolerance) && farthest({ v }, ignored) < 0.9 * ownBefore &&
-          farthest(group, ignored) <= before)
+          farthest(group, ignored) <= before && (!onCrease || closeEnough()))
         {
           remesh.SourceTriangles[static_cast<size_t>(v)] = triangle;
           std::copy(weights, weights + 3, &remesh.SourceBarycentric[3 * static_cast<size_t>(v)]);

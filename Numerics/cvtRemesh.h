@@ -82,9 +82,10 @@ struct CVTNUMERICS_EXPORT RemeshInput
 /// them, and where that is not enough an edge of theirs is collapsed (the remesh then has a vertex
 /// fewer) if that widens the triangles around it; the vertices of thin triangles left, free or
 /// pinned to a crease (not to the border), then search the surface around them for wider places.
-/// Then free vertices move towards input points (its vertices, and points along its long edges)
-/// that lie farther than 0.8% of the input's bounding-box diagonal from the remesh (tips and ridges
-/// thinner than the cells), where that brings them closer without a corner under 27 degrees.
+/// Then vertices off the border (free or on creases) move towards input points (its vertices, and
+/// points along its long edges) that lie farther than 0.8% of the input's bounding-box diagonal
+/// from the remesh (tips and ridges thinner than the cells, the far crease of a band narrower than
+/// them), where that brings them closer without a corner under 27 degrees.
 /// Border edges whose input boundary between their ends lies farther than that from them get an end
 /// moved along the border onto its farthest point (a corner of the input's border) where that cuts
 /// less of it off, else are split there, while the triangles keep corners of 27 degrees. Last,

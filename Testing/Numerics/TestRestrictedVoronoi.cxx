@@ -1226,6 +1226,68 @@ TEST(RestrictedVoronoi, RemeshBorderFollowsTheCornersOfTheInputsBorder)
             << " of the diagonal, " << following.BorderCorners << " border vertices added\n";
 }
 
+TEST(RestrictedVoronoi, RemeshCreaseVerticesReachForTheFarCreaseOfANarrowBand)
+{
+  // A ridge with a flat top 0.2 wide (a CAD chamfer narrower than the cells): creases A at
+  // x = -0.1 and B at x = 0.1, height 0.5, slopes down to z = 0 at x = -1 and x = 1. The one
+  // vertex off the input's corners sits on crease A, pinned there, so its fan cuts crease B's
+  // middle off by 0.083, 2.9% of the bounding-box diagonal (2.87). Given the input, the crease
+  // vertex moves into the band, part way to crease B, where both creases lie closer.
+  const double w = 0.1, h = 0.3, s = 0.4, y = 0.3;
+  cvt::SurfaceMesh ridge;
+  ridge.Points = { -s, -y, 0, -w, -y, h, w, -y, h, s, -y, 0, s, y, 0, w, y, h, -w, y, h, -s, y, 0 };
+  enum Corner
+  {
+    L1,
+    A1,
+    B1,
+    R1,
+    R2,
+    B2,
+    A2,
+    L2
+  };
+  ridge.Triangles = { { L1, A1, A2 }, { L1, A2, L2 }, { A1, B1, B2 }, { A1, B2, A2 },
+    { B1, R1, R2 }, { B1, R2, B2 } };
+  std::vector<std::array<double, 3>> points = { { -w, 0.0, h } };
+  std::vector<char> pinned = { 1 }; // on crease A
+  for (int c = 0; c < 8; ++c)
+  {
+    points.push_back({ ridge.Points[3 * c], ridge.Points[3 * c + 1], ridge.Points[3 * c + 2] });
+    pinned.push_back(1);
+  }
+  cvt::RestrictedDual dual = DualAt(points, true, pinned);
+  for (int c = 0; c < 8; ++c)
+  {
+    dual.Triangles.push_back({ 0, 1 + c, 1 + (c + 1) % 8 });
+  }
+  const double diagonal = cvt::BoundingBoxDiagonal(ridge);
+  const cvt::Remesh cut = cvt::BuildRemesh(dual, 1);
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1, 8, &ridge);
+  const double before =
+    FarthestPoint(ridge.Points, ridge.Triangles, cut.Points, cut.Triangles, 20) / diagonal;
+  const double after =
+    FarthestPoint(ridge.Points, ridge.Triangles, remesh.Points, remesh.Triangles, 20) / diagonal;
+  const double backBefore =
+    FarthestPoint(cut.Points, cut.Triangles, ridge.Points, ridge.Triangles, 20) / diagonal;
+  const double backAfter =
+    FarthestPoint(remesh.Points, remesh.Triangles, ridge.Points, ridge.Triangles, 20) / diagonal;
+  EXPECT_GT(before, 0.028);
+  ASSERT_GE(remesh.FittedVertices, 1);
+  const int vertex = static_cast<int>(
+    std::find(remesh.SiteIds.begin(), remesh.SiteIds.end(), 0) - remesh.SiteIds.begin());
+  EXPECT_GT(remesh.Points[3 * vertex], -w + 0.02); // off crease A, into the band
+  EXPECT_NEAR(remesh.Points[3 * vertex + 2], h, 1e-9);
+  EXPECT_LT(after, 0.8 * before);
+  EXPECT_LT(backAfter, 0.8 * backBefore);
+  EXPECT_GE(SmallestAngle(remesh), 27.0);
+  ExpectSourceGivesThePointBack(remesh, ridge, vertex);
+  std::cout << "[ measured ] narrow band: input to remesh " << before << " -> " << after
+            << ", remesh to input " << backBefore << " -> " << backAfter
+            << " of the diagonal; the crease vertex moved to x = " << remesh.Points[3 * vertex]
+            << "\n";
+}
+
 TEST(RestrictedVoronoi, FidelityFindsTheInputPointsTheRemeshCutsOff)
 {
   // The remesh of the spike whose free vertex sits half way up its side cuts the apex off.
