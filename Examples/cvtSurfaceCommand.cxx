@@ -180,7 +180,8 @@ int RunRemesh(const Options& options)
               << Field(remesh, "BorderCorners") << " added on border corners, "
               << Field(remesh, "StraddlingVertices") << " moved to straddle the input)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
-              << " %\n"
+              << " % (off the border " << 100.0 * Field(remesh, "InteriorValence6Fraction")
+              << " %)\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
               << Field(remesh, "MaximumAngle") << " degrees\n"
               << "  seconds: read " << readSeconds << ", prepare " << Field(sites, "PrepareSeconds")
@@ -275,7 +276,8 @@ int RunSurface(const Options& options)
     std::cout << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
-              << " %\n"
+              << " % (off the border " << 100.0 * Field(remesh, "InteriorValence6Fraction")
+              << " %)\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
               << Field(remesh, "MaximumAngle") << " degrees\n"
               << "  valence histogram          ";

@@ -111,6 +111,7 @@ vtkSmartPointer<vtkIntArray> SiteIdArray(const std::vector<int>& values)
 void AddMeshQuality(vtkFieldData* fields, const cvt::MeshQuality& quality)
 {
   AddFieldValue(fields, "Valence6Fraction", quality.Valence6Fraction);
+  AddFieldValue(fields, "InteriorValence6Fraction", quality.InteriorValence6Fraction);
   AddFieldValue(fields, "MinimumAngle", quality.MinimumAngle);
   AddFieldValue(fields, "MaximumAngle", quality.MaximumAngle);
   for (const auto& histogram : { std::make_pair("ValenceHistogram", &quality.ValenceHistogram),

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
+#include <map>
 
 namespace cvt
 {
@@ -115,13 +115,13 @@ MeshQuality MeasureMesh(
   MeshQuality q;
   q.AngleHistogram.assign(18, 0);
   q.MinimumAngle = triangles.empty() ? 0.0 : 180.0;
-  std::set<std::pair<int, int>> edges;
+  std::map<std::pair<int, int>, int> edges; // and the triangles using each
   for (const auto& t : triangles)
   {
     for (int e = 0; e < 3; ++e)
     {
       const int a = t[e], b = t[(e + 1) % 3], c = t[(e + 2) % 3];
-      edges.insert({ std::min(a, b), std::max(a, b) });
+      ++edges[{ std::min(a, b), std::max(a, b) }];
       double u[3], v[3];
       for (int k = 0; k < 3; ++k)
       {
@@ -139,22 +139,34 @@ MeshQuality MeasureMesh(
     }
   }
   std::vector<int> valence(points.size() / 3, 0);
-  for (const auto& e : edges)
+  std::vector<char> onBorder(valence.size(), 0);
+  for (const auto& [edge, uses] : edges)
   {
-    ++valence[e.first];
-    ++valence[e.second];
+    ++valence[edge.first];
+    ++valence[edge.second];
+    if (uses == 1)
+    {
+      onBorder[edge.first] = onBorder[edge.second] = 1;
+    }
   }
-  int six = 0;
-  for (int v : valence)
+  int six = 0, interior = 0, interiorSix = 0;
+  for (size_t i = 0; i < valence.size(); ++i)
   {
+    const int v = valence[i];
     if (static_cast<int>(q.ValenceHistogram.size()) <= v)
     {
       q.ValenceHistogram.resize(v + 1, 0);
     }
     ++q.ValenceHistogram[v];
     six += v == 6 ? 1 : 0;
+    if (v > 0 && !onBorder[i])
+    {
+      ++interior;
+      interiorSix += v == 6 ? 1 : 0;
+    }
   }
   q.Valence6Fraction = valence.empty() ? 0.0 : static_cast<double>(six) / valence.size();
+  q.InteriorValence6Fraction = interior > 0 ? static_cast<double>(interiorSix) / interior : 0.0;
   return q;
 }
 

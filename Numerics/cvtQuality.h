@@ -33,7 +33,8 @@ struct MeshQuality
   std::vector<int> AngleHistogram;   // 18 bins of 10 degrees
   double MinimumAngle = 0.0;         // degrees
   double MaximumAngle = 0.0;
-  double Valence6Fraction = 0.0;
+  double Valence6Fraction = 0.0;         // of all vertices
+  double InteriorValence6Fraction = 0.0; // of the vertices in triangles and off the border
 };
 
 /// `points` flat (x, y, z, ...); triangles index them.

@@ -1412,6 +1412,31 @@ TEST(RestrictedVoronoi, SphereRemeshStraddlesTheInput)
             << " inscribed, " << after << " straddling; mean vertex radius " << radius << "\n";
 }
 
+TEST(MeshQuality, CountsValencesOffTheBorderApart)
+{
+  // A hexagon fanned round its centre: the centre has 6 edges, the six border vertices 3 each.
+  // The fraction off the border (what remeshes are judged by) is 1, that of all vertices 1/7.
+  std::vector<double> points = { 0, 0, 0 };
+  std::vector<std::array<int, 3>> triangles;
+  for (int k = 0; k < 6; ++k)
+  {
+    const double angle = k * 3.14159265358979323846 / 3.0;
+    points.insert(points.end(), { std::cos(angle), std::sin(angle), 0.0 });
+    triangles.push_back({ 0, 1 + k, 1 + (k + 1) % 6 });
+  }
+  const cvt::MeshQuality fan = cvt::MeasureMesh(points, triangles);
+  EXPECT_DOUBLE_EQ(fan.Valence6Fraction, 1.0 / 7.0);
+  EXPECT_DOUBLE_EQ(fan.InteriorValence6Fraction, 1.0);
+  EXPECT_NEAR(fan.MinimumAngle, 60.0, 1e-9);
+  // An octahedron: closed, every vertex has 4 edges.
+  const std::vector<double> corners = { 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1 };
+  const std::vector<std::array<int, 3>> faces = { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 },
+    { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 }, { 3, 1, 5 }, { 0, 3, 5 } };
+  const cvt::MeshQuality octahedron = cvt::MeasureMesh(corners, faces);
+  EXPECT_EQ(octahedron.ValenceHistogram.at(4), 6);
+  EXPECT_DOUBLE_EQ(octahedron.InteriorValence6Fraction, 0.0);
+}
+
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
 {
   // A square of two triangles, one flipped, plus a duplicate, a degenerate and an unused point.
