@@ -39,6 +39,8 @@ Surface (cvt surface):
                           (merged points, triangulated, degenerate triangles dropped,
                           oriented) and remeshed
   --array NAME            with --input: a point array used as density (denser where larger)
+  --keep-every-site       with --input: every site keeps its remesh vertex (by default edges
+                          are collapsed where that brings valences closer to 6)
   --engine auto|cpu|opengl
                           with --input: cpu (and auto) computes exact restricted Voronoi cells
                           on the mesh, multi-threaded; opengl maps it into a geometry
@@ -144,6 +146,8 @@ Options ParseArguments(const std::vector<std::string>& args)
       options.Input = value();
     else if (a == "--array")
       options.Array = value();
+    else if (a == "--keep-every-site")
+      options.KeepEverySite = true;
     else if (a == "--engine")
       options.Engine = value();
     else if (a == "--invert")
@@ -245,6 +249,10 @@ Options ParseArguments(const std::vector<std::string>& args)
   if (options.Command == "surface" && !options.Array.empty() && options.Input.empty())
   {
     Fail("--array with 'cvt surface' names a point array of the --input mesh", 2);
+  }
+  if (options.KeepEverySite && (options.Command != "surface" || options.Input.empty()))
+  {
+    Fail("--keep-every-site is an option of 'cvt surface --input' (the remesh of a mesh)", 2);
   }
   if (options.Command == "image" && options.HaveTorus)
   {

@@ -28,6 +28,7 @@ struct Options
   int GIResolution[2] = { 1024, 512 };
   bool GIResolutionGiven = false; // else a mesh's atlas is sized from --sites
   bool HaveTorus = false, HaveImageOption = false;
+  bool KeepEverySite = false; // --keep-every-site: no remesh collapses for valence 6
   std::string Engine = "auto";
   long long Seed = 1;
   double Tolerance = 1e-6;

@@ -122,6 +122,7 @@ int RunRemesh(const Options& options)
   vtkNew<vtkCVTRemeshFilter> cvt;
   cvt->SetInputConnection(reader->GetOutputPort());
   cvt->SetDensityArray(options.Array.c_str());
+  cvt->SetCollapseForValence(!options.KeepEverySite);
   SetOptimizer(options, cvt.Get());
   const Clock::time_point optimise = Clock::now();
   RunOrFail(
@@ -176,6 +177,7 @@ int RunRemesh(const Options& options)
               << " edges flipped for angles, " << Field(remesh, "ValenceFlips") << " for valence, "
               << Field(remesh, "MovedVertices") << " vertices moved, "
               << Field(remesh, "CollapsedEdges") << " edges collapsed, "
+              << Field(remesh, "ValenceCollapses") << " for valence, "
               << Field(remesh, "FittedVertices") << " vertices moved towards tips, "
               << Field(remesh, "BorderCorners") << " added on border corners, "
               << Field(remesh, "StraddlingVertices") << " moved to straddle the input)\n"
@@ -237,6 +239,7 @@ int RunSurface(const Options& options)
     exact->SetInputConnection(geometryImage->GetInputConnection(0, 0));
     exact->SetInitialSitesData(sites);
     exact->SetDensityArray(options.Array.c_str());
+    exact->SetCollapseForValence(!options.KeepEverySite);
     exact->SetMaximumNumberOfIterations(0);
     RunOrFail(exact,
       [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetRemeshOutput(); });

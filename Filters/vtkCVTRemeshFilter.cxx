@@ -626,6 +626,7 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
   cvtvtk::AddFieldValue(fields, "FittedVertices", remesh.FittedVertices);
   cvtvtk::AddFieldValue(fields, "StraddlingVertices", remesh.StraddlingVertices);
   cvtvtk::AddFieldValue(fields, "BorderCorners", remesh.BorderCorners);
+  cvtvtk::AddFieldValue(fields, "ValenceCollapses", remesh.ValenceCollapses);
   AddTopology(fields, "", topology);
   AddTopology(fields, "Input", input);
 }
@@ -766,7 +767,8 @@ bool vtkCVTRemeshFilter::Compute(
   // The remesh kept has the input's topology and the fewest such parts, else the closest
   // topology.
   TopologyRefinement best;
-  const cvt::RemeshInput target(mesh, &inputTopology);
+  cvt::RemeshInput target(mesh, &inputTopology);
+  target.CollapseForValence = this->CollapseForValence;
   if (!RefineForTopology(
         engine, target, inputTopology, result.Sites, [this]() { return this->StopRequested(); },
         best, error))
@@ -826,4 +828,5 @@ void vtkCVTRemeshFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent
      << "DensityArray: " << (this->DensityArray.empty() ? "(uniform)" : this->DensityArray) << "\n";
+  os << indent << "CollapseForValence: " << (this->CollapseForValence ? "on" : "off") << "\n";
 }

@@ -395,6 +395,7 @@ bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage
 
   remesher->SetInputData(mesh);
   remesher->CopyOptimizerSettings(this);
+  remesher->SetCollapseForValence(this->CollapseForValence);
   // Under MPI the ranks share its clipping of the triangles; the outputs are split below.
   remesher->ShareRanksLike(outputVector->GetInformationObject(0));
   // Its errors become ours; its progress is ours, and our abort stops it.
@@ -464,4 +465,5 @@ void vtkCVTSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DensityArray: " << (this->DensityArray.empty() ? "(none)" : this->DensityArray)
      << "\n";
+  os << indent << "CollapseForValence: " << (this->CollapseForValence ? "on" : "off") << "\n";
 }

@@ -69,6 +69,18 @@ public:
   vtkSetStdStringFromCharMacro(DensityArray);
   vtkGetCharFromStdStringMacro(DensityArray);
 
+  ///@{
+  /**
+   * On the CPU engine (the remesh of the triangulated image, vtkCVTRemeshFilter): collapse
+   * remesh edges where that brings valences closer to 6 (the remesh then has a vertex fewer than
+   * sites per collapse). Default off: every site keeps its vertex, as on the OpenGL engine (the
+   * dual of the labels).
+   */
+  vtkSetMacro(CollapseForValence, bool);
+  vtkGetMacro(CollapseForValence, bool);
+  vtkBooleanMacro(CollapseForValence, bool);
+  ///@}
+
   /**
    * Reads a geometry image (Position required; Normal and AreaWeight computed when missing;
    * Mask optional; WrapU/WrapV field data) into the numerical core's form. Returns false with
@@ -94,6 +106,7 @@ protected:
     bool weighted, const std::string& reason, vtkInformationVector* outputVector);
 
   std::string DensityArray;
+  bool CollapseForValence = false;
 
 private:
   vtkCVTSurfaceFilter(const vtkCVTSurfaceFilter&) = delete;

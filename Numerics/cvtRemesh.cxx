@@ -451,6 +451,41 @@ int RelaxThinTriangles(
   return moved;
 }
 
+/// Vertex v's neighbours through its live triangles (`around`: per vertex, its triangles, dead
+/// ones included), in order.
+std::vector<int> LiveNeighbours(const Remesh& remesh, const std::vector<std::vector<int>>& around,
+  const std::vector<char>& alive, int v)
+{
+  std::vector<int> n;
+  for (int t : around[static_cast<size_t>(v)])
+  {
+    for (int w : remesh.Triangles[static_cast<size_t>(t)])
+    {
+      if (alive[static_cast<size_t>(t)] && w != v)
+      {
+        n.push_back(w);
+      }
+    }
+  }
+  std::sort(n.begin(), n.end());
+  n.erase(std::unique(n.begin(), n.end()), n.end());
+  return n;
+}
+
+/// Drops the triangles that collapses killed.
+void KeepLiveTriangles(Remesh& remesh, const std::vector<char>& alive)
+{
+  size_t last = 0;
+  for (size_t t = 0; t < remesh.Triangles.size(); ++t)
+  {
+    if (alive[t])
+    {
+      remesh.Triangles[last++] = remesh.Triangles[t];
+    }
+  }
+  remesh.Triangles.resize(last);
+}
+
 /// Collapses an edge of each triangle with a corner under 30 degrees where that raises the
 /// smallest angle around it: cells of a part about as thin as they are wide, or cut by a crease
 /// or a border, leave a vertex so close to a neighbour (needles) or to the line of two others
@@ -491,23 +526,7 @@ int CollapseThinTriangles(
     const auto& tri = remesh.Triangles[static_cast<size_t>(t)];
     return tri[0] == v || tri[1] == v || tri[2] == v;
   };
-  const auto neighbours = [&](int v)
-  {
-    std::vector<int> n;
-    for (int t : around[static_cast<size_t>(v)])
-    {
-      for (int w : remesh.Triangles[static_cast<size_t>(t)])
-      {
-        if (alive[static_cast<size_t>(t)] && w != v)
-        {
-          n.push_back(w);
-        }
-      }
-    }
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-    return n;
-  };
+  const auto neighbours = [&](int v) { return LiveNeighbours(remesh, around, alive, v); };
   // The smallest angle around v once u goes to v's place, or -1 where that collapse is not
   // allowed.
   const auto collapsedSmallest = [&](int u, int v)
@@ -636,15 +655,7 @@ int CollapseThinTriangles(
       break;
     }
   }
-  size_t last = 0;
-  for (size_t t = 0; t < remesh.Triangles.size(); ++t)
-  {
-    if (alive[t])
-    {
-      remesh.Triangles[last++] = remesh.Triangles[t];
-    }
-  }
-  remesh.Triangles.resize(last);
+  KeepLiveTriangles(remesh, alive);
   return collapsed;
 }
 
@@ -1748,6 +1759,204 @@ void DropUnusedVertices(Remesh& remesh, std::vector<char>& pinned)
   }
 }
 
+/// Collapses edges between two free vertices off the border into one vertex at their middle's
+/// nearest input point where that brings the valences round them closer to 6 (squared
+/// deviations, 4 on a border): a pair of valence-5 vertices with valence-7 vertices across their
+/// edge, as the size changes round thin parts' added sites leave (a 5 next to a 5 becomes one
+/// 6, and the 7s become 6s), which no flip mends. A collapse keeps the link condition, turns no
+/// triangle by more than 60 degrees, keeps corners of 30 degrees (ThinCorner; or the smallest
+/// there was), makes no edge more than 1.3 times the longest round it, lifts the triangles'
+/// centroids no farther from the input than `tolerance` or 0.3 of the median edge, the
+/// smaller (or than before), and leaves both old vertices (input points) within 3/4 of that of
+/// the new triangles. Short edges first. The
+/// removed vertices stay in `remesh` but in no triangle. Returns the number of edges collapsed.
+int CollapseTowardsValenceSix(Remesh& remesh, const std::vector<char>& pinned,
+  const SurfaceProjector& projector, double tolerance)
+{
+  std::vector<std::vector<int>> around = TrianglesAroundVertices(remesh);
+  std::vector<char> alive(remesh.Triangles.size(), 1);
+  const std::vector<char> onBorder = BorderVertices(remesh);
+  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
+  const auto neighbours = [&](int v) { return LiveNeighbours(remesh, around, alive, v); };
+  const auto deviation = [&onBorder](int v, int edges)
+  {
+    const int d = edges - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
+    return d * d;
+  };
+  const auto valence = [&](int v) { return static_cast<int>(neighbours(v).size()); };
+  // Interior edges between free vertices off the border, shortest first.
+  std::vector<std::pair<double, std::pair<int, int>>> edges;
+  {
+    const EdgeTable table(remesh.Triangles);
+    for (size_t e = 0; e < table.NumberOfEdges(); ++e)
+    {
+      if (table.Edge(e).size() != 2)
+      {
+        continue;
+      }
+      const EdgeUse& use = *table.Edge(e).begin();
+      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(use.Triangle)];
+      const int a = tri[use.Local], b = tri[(use.Local + 1) % 3];
+      if (!pinned[static_cast<size_t>(a)] && !pinned[static_cast<size_t>(b)] &&
+        !onBorder[static_cast<size_t>(a)] && !onBorder[static_cast<size_t>(b)])
+      {
+        edges.push_back({ Distance2(point(a), point(b)), { a, b } });
+      }
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  if (edges.empty())
+  {
+    return 0;
+  }
+  // As far from the input as `tolerance` allows, or 0.3 of the median edge where that is
+  // less (more sites: closer, as their remeshes are).
+  const double reach = std::min(tolerance, 0.3 * std::sqrt(edges[edges.size() / 2].first));
+  std::vector<char> gone(remesh.SiteIds.size(), 0);
+  int collapsed = 0;
+  for (const auto& [unused, ab] : edges)
+  {
+    const auto [a, b] = ab;
+    if (gone[static_cast<size_t>(a)] || gone[static_cast<size_t>(b)])
+    {
+      continue;
+    }
+    std::vector<int> onEdge, others; // triangles on (a, b), and those of one of them only
+    for (int v : { a, b })
+    {
+      for (int t : around[static_cast<size_t>(v)])
+      {
+        const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+        const bool both = std::find(tri.begin(), tri.end(), a) != tri.end() &&
+          std::find(tri.begin(), tri.end(), b) != tri.end();
+        if (alive[static_cast<size_t>(t)] && (!both || v == a))
+        {
+          (both ? onEdge : others).push_back(t);
+        }
+      }
+    }
+    if (onEdge.size() != 2)
+    {
+      continue;
+    }
+    // The corners across the edge; the link condition: a and b share no other neighbour.
+    std::array<int, 2> across{};
+    for (size_t i = 0; i < 2; ++i)
+    {
+      for (int w : remesh.Triangles[static_cast<size_t>(onEdge[i])])
+      {
+        if (w != a && w != b)
+        {
+          across[i] = w;
+        }
+      }
+    }
+    const std::vector<int> of_a = neighbours(a), of_b = neighbours(b);
+    std::vector<int> shared;
+    std::set_intersection(
+      of_a.begin(), of_a.end(), of_b.begin(), of_b.end(), std::back_inserter(shared));
+    if (shared.size() != 2)
+    {
+      continue;
+    }
+    const int va = static_cast<int>(of_a.size()), vb = static_cast<int>(of_b.size());
+    const int vc = valence(across[0]), vd = valence(across[1]);
+    const int before =
+      deviation(a, va) + deviation(b, vb) + deviation(across[0], vc) + deviation(across[1], vd);
+    const int after =
+      deviation(a, va + vb - 4) + deviation(across[0], vc - 1) + deviation(across[1], vd - 1);
+    if (after >= before)
+    {
+      continue;
+    }
+    double middle[3], m[3], weights[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      middle[k] = 0.5 * (point(a)[k] + point(b)[k]);
+    }
+    const int source = projector.Nearest(middle, m, weights);
+    if (source < 0)
+    {
+      continue;
+    }
+    double smallestBefore = 10.0, smallestAfter = 10.0, longest = 0.0;
+    std::vector<std::array<const double*, 3>> old, changed;
+    bool kept = true;
+    for (const auto* set : { &onEdge, &others })
+    {
+      for (int t : *set)
+      {
+        const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+        old.push_back({ point(tri[0]), point(tri[1]), point(tri[2]) });
+        smallestBefore =
+          std::min(smallestBefore, SmallestCorner(old.back()[0], old.back()[1], old.back()[2]));
+        longest = std::max({ longest, Distance2(old.back()[0], old.back()[1]),
+          Distance2(old.back()[1], old.back()[2]), Distance2(old.back()[2], old.back()[0]) });
+      }
+    }
+    for (int t : others)
+    {
+      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+      std::array<const double*, 3> p;
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = tri[k] == a || tri[k] == b ? m : point(tri[k]);
+      }
+      double n0[3], n1[3];
+      UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), n0);
+      UnitNormal(p[0], p[1], p[2], n1);
+      kept = kept && Dot(n0, n1) >= 0.5 &&
+        std::max({ Distance2(p[0], p[1]), Distance2(p[1], p[2]), Distance2(p[2], p[0]) }) <=
+          1.69 * longest;
+      smallestAfter = std::min(smallestAfter, SmallestCorner(p[0], p[1], p[2]));
+      changed.push_back(p);
+    }
+    if (!kept || smallestAfter < std::min(smallestBefore, ThinCorner) ||
+      projector.FarthestCentroid(changed) > std::max(projector.FarthestCentroid(old), reach))
+    {
+      continue;
+    }
+    // The old vertices, input points, must stay near the new triangles.
+    for (int v : { a, b })
+    {
+      double nearest = std::numeric_limits<double>::max();
+      for (const auto& p : changed)
+      {
+        double q[3], w[3];
+        ClosestPointOnTriangle(point(v), p[0], p[1], p[2], q, w);
+        nearest = std::min(nearest, Distance2(point(v), q));
+      }
+      kept = kept && nearest <= 0.5625 * reach * reach; // 3/4 of it
+    }
+    if (!kept)
+    {
+      continue;
+    }
+    // b goes into a, which moves to m.
+    std::copy(m, m + 3, point(a));
+    remesh.SourceTriangles[static_cast<size_t>(a)] = source;
+    std::copy(weights, weights + 3, &remesh.SourceBarycentric[3 * static_cast<size_t>(a)]);
+    for (int t : onEdge)
+    {
+      alive[static_cast<size_t>(t)] = 0;
+    }
+    for (int t : around[static_cast<size_t>(b)])
+    {
+      if (alive[static_cast<size_t>(t)])
+      {
+        std::replace(remesh.Triangles[static_cast<size_t>(t)].begin(),
+          remesh.Triangles[static_cast<size_t>(t)].end(), b, a);
+        around[static_cast<size_t>(a)].push_back(t);
+      }
+    }
+    around[static_cast<size_t>(b)].clear();
+    gone[static_cast<size_t>(b)] = 1;
+    ++collapsed;
+  }
+  KeepLiveTriangles(remesh, alive);
+  return collapsed;
+}
+
 /// Triangulates a small hole (a loop of at most a few dozen vertices, in the loop's
 /// orientation) so that its thinnest triangle is as wide as it can be: the classic dynamic
 /// programme over sub-polygons, O(n^3). `position(v)` gives vertex v's point; diagonals for
@@ -2218,6 +2427,14 @@ Remesh BuildRemeshAgainst(
   const std::vector<double>& probes = input->Probes;
   remesh.FittedVertices = FitToSurface(remesh, pinned, probes, projector, tolerance);
   remesh.BorderCorners = FollowInputBorder(remesh, pinned, *input, tolerance);
+  if (input->CollapseForValence)
+  {
+    remesh.ValenceCollapses = CollapseTowardsValenceSix(remesh, pinned, projector, tolerance);
+  }
+  if (remesh.ValenceCollapses > 0)
+  {
+    DropUnusedVertices(remesh, pinned);
+  }
   // Collapses change valences and moves change angles: flips the first pass could not take.
   remesh.ValenceFlips += FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);
   remesh.StraddlingVertices =

@@ -31,6 +31,7 @@ struct Remesh
   int ValenceFlips = 0;      // diagonals flipped to bring valences closer to 6
   int MovedVertices = 0;     // free vertices of thin triangles moved along the surface
   int CollapsedEdges = 0;    // edges of thin triangles collapsed (a vertex fewer each)
+  int ValenceCollapses = 0;  // edges collapsed to bring valences closer to 6 (likewise)
   int SeparatedVertices = 0; // vertices at one place moved apart (split copies)
   int FittedVertices = 0;    // free vertices moved towards input tips and ridges the remesh cut off
   int StraddlingVertices = 0; // free vertices moved along their normals to straddle the input
@@ -65,6 +66,9 @@ struct CVTNUMERICS_EXPORT RemeshInput
   std::vector<std::vector<int>> Loops;          // its boundary loops (MeshTopology::Loops)
   std::vector<std::vector<double>> LoopLengths; // of each loop (cvt::LoopLengths)
   std::unordered_map<int, LoopPoint> OnLoop;    // per point of a loop
+  /// BuildRemesh may collapse edges to bring valences closer to 6 (the remesh then has fewer
+  /// vertices than the dual); false keeps a vertex per dual vertex.
+  bool CollapseForValence = true;
 };
 
 /// Builds the remesh from the dual of the final sites: vertices are the sites' nearest surface
@@ -88,7 +92,10 @@ struct CVTNUMERICS_EXPORT RemeshInput
 /// them), where that brings them closer without a corner under 27 degrees.
 /// Border edges whose input boundary between their ends lies farther than that from them get an end
 /// moved along the border onto its farthest point (a corner of the input's border) where that cuts
-/// less of it off, else are split there, while the triangles keep corners of 27 degrees. Last,
+/// less of it off, else are split there, while the triangles keep corners of 27 degrees. Edges
+/// between free vertices are then collapsed where that brings the valences round them closer to 6
+/// (two valence-5 vertices with 7s across their edge: a vertex fewer), keeping corners of 30
+/// degrees and the remesh as close to the input, and the valence flips run again. Last,
 /// where the remesh still lies farther than 0.8% from the input either way, free vertices off
 /// creases and the border move along their normals so that it straddles the input (a least-squares
 /// step), where that brings the remesh round them no farther from it.
