@@ -27,8 +27,9 @@
  * 1. labels: the cleaned input with an int point array SiteId (the nearest site);
  * 2. remesh: the restricted Delaunay triangulation of the sites: vertices on the surface
  *    (sites whose cell meets the border are pinned to it), oriented like the input, the input's
- *    point arrays interpolated onto it (but its normals); field data with valence and angle
- * measures and topology;
+ *    point arrays interpolated onto it (but its normals), edges collapsed where that brings
+ *    valences closer to 6 (CollapseForValence; off, a vertex per site); field data with
+ *    valence and angle measures and topology;
  * 3. history: vtkTable (iteration, evaluations, energy, gradient_norm, seconds).
  * Bad input gives a clear error, empty outputs and RequestData returning 0.
  */
