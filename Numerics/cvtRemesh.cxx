@@ -232,6 +232,14 @@ double PairDistance(const SurfaceProjector& surface, const double* a, const doub
     surface.FarthestCentroid({ { a, b, c }, { b, a, d } }), surface.DistanceTo(middle));
 }
 
+/// How far `edges` edges at vertex v are from what isotropic remeshes aim at, squared: 6, or 4
+/// on a border (`onBorder`).
+int ValenceDeviation(const std::vector<char>& onBorder, int v, int edges)
+{
+  const int d = edges - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
+  return d * d;
+}
+
 /// Flips that bring the four vertices' valences closer to 6 (4 on a border), as isotropic
 /// remeshers do, where the pair keeps every angle above 30 degrees or gets no thinner: cells of
 /// a CVT that is not yet fully converged, and cells near creases and on thin parts, leave pairs
@@ -252,10 +260,7 @@ int FlipTowardsValenceSix(const std::vector<double>& points, const std::vector<c
     [&](const EdgeFlip& f, const std::vector<int>& valence, const std::vector<char>& onBorder)
     {
       const auto deviation = [&onBorder](int v, int edges)
-      {
-        const int d = edges - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
-        return d * d;
-      };
+      { return ValenceDeviation(onBorder, v, edges); };
       const auto of = [&valence](int v) { return valence[static_cast<size_t>(v)]; };
       const int before = deviation(f.A, of(f.A)) + deviation(f.B, of(f.B)) +
         deviation(f.C, of(f.C)) + deviation(f.D, of(f.D));
@@ -472,6 +477,16 @@ std::vector<int> LiveNeighbours(const Remesh& remesh, const std::vector<std::vec
   return n;
 }
 
+/// How many vertices two sorted neighbour lists share: the link condition of an edge collapse
+/// asks that they be only the far corners of the edge's triangles.
+size_t SharedNeighbours(const std::vector<int>& of_u, const std::vector<int>& of_v)
+{
+  std::vector<int> shared;
+  std::set_intersection(
+    of_u.begin(), of_u.end(), of_v.begin(), of_v.end(), std::back_inserter(shared));
+  return shared.size();
+}
+
 /// Drops the triangles that collapses killed.
 void KeepLiveTriangles(Remesh& remesh, const std::vector<char>& alive)
 {
@@ -554,11 +569,7 @@ int CollapseThinTriangles(
       return -1.0;
     }
     // Link condition: u and v share no neighbour but the far corners of their triangles.
-    const std::vector<int> of_u = neighbours(u), of_v = neighbours(v);
-    std::vector<int> shared;
-    std::set_intersection(
-      of_u.begin(), of_u.end(), of_v.begin(), of_v.end(), std::back_inserter(shared));
-    if (shared.size() != onEdge.size())
+    if (SharedNeighbours(neighbours(u), neighbours(v)) != onEdge.size())
     {
       return -1.0;
     }
@@ -1779,10 +1790,7 @@ int CollapseTowardsValenceSix(Remesh& remesh, const std::vector<char>& pinned,
   const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
   const auto neighbours = [&](int v) { return LiveNeighbours(remesh, around, alive, v); };
   const auto deviation = [&onBorder](int v, int edges)
-  {
-    const int d = edges - (onBorder[static_cast<size_t>(v)] ? 4 : 6);
-    return d * d;
-  };
+  { return ValenceDeviation(onBorder, v, edges); };
   const auto valence = [&](int v) { return static_cast<int>(neighbours(v).size()); };
   // Interior edges between free vertices off the border, shortest first.
   std::vector<std::pair<double, std::pair<int, int>>> edges;
@@ -1852,10 +1860,7 @@ int CollapseTowardsValenceSix(Remesh& remesh, const std::vector<char>& pinned,
       }
     }
     const std::vector<int> of_a = neighbours(a), of_b = neighbours(b);
-    std::vector<int> shared;
-    std::set_intersection(
-      of_a.begin(), of_a.end(), of_b.begin(), of_b.end(), std::back_inserter(shared));
-    if (shared.size() != 2)
+    if (SharedNeighbours(of_a, of_b) != 2)
     {
       continue;
     }
@@ -2430,10 +2435,10 @@ Remesh BuildRemeshAgainst(
   if (input->CollapseForValence)
   {
     remesh.ValenceCollapses = CollapseTowardsValenceSix(remesh, pinned, projector, tolerance);
-  }
-  if (remesh.ValenceCollapses > 0)
-  {
-    DropUnusedVertices(remesh, pinned);
+    if (remesh.ValenceCollapses > 0)
+    {
+      DropUnusedVertices(remesh, pinned);
+    }
   }
   // Collapses change valences and moves change angles: flips the first pass could not take.
   remesh.ValenceFlips += FlipTowardsValenceSix(remesh.Points, pinned, remesh.Triangles, &projector);
