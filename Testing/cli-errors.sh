@@ -47,6 +47,8 @@ expect_error "no triangles" surface --engine opengl --input "$T/torus/sites.vtp"
 expect_error "no polygons (only points or lines)" surface --input "$T/torus/sites.vtp"
 expect_error "auto, cpu or opengl" surface --engine cuda
 expect_error "names a point array of the --input mesh" surface --array Density
+expect_error "option of 'cvt surface --input'" surface --keep-every-site
+expect_error "option of 'cvt surface --input'" image --keep-every-site
 expect_error "no one-component point array 'Density'" surface --input "$T/torus/remesh.vtp" --array Density
 expect_error "at least 3" surface --input "$T/torus/remesh.vtp" --sites 2
 # Three triangles on one edge: refused in one line saying where, without VTK's pipeline dump.

@@ -50,6 +50,7 @@ const std::vector<std::vector<std::string>> ValidCommandLines = {
   { "image", "--initial-sites", "s.csv", "--tolerance", "1e-5", "--gradient-tolerance", "0.1" },
   { "surface", "--torus", "1", "0.4", "--gi-resolution", "64", "32", "--corrections", "5" },
   { "surface", "--input", "m.ply", "--array", "D", "--sites", "50", "--output", "o", "--quiet" },
+  { "surface", "--input", "m.off", "--keep-every-site", "--engine", "cpu" },
 };
 
 // Invariants of a command line that parsed: every value in its documented range.

@@ -22,6 +22,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkTable.h"
@@ -35,6 +36,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <sstream>
 
 using cvttest::TorusImage;
 
@@ -153,6 +155,53 @@ TEST(SurfaceFilter, TorusWith600SitesAndItsRemesh)
   EXPECT_EQ(mesh.Euler(), 0);
   EXPECT_EQ(
     cvt->GetLabelsOutput()->GetPointData()->GetArray("SiteId")->GetNumberOfTuples(), 256 * 128);
+}
+
+// On the CPU engine the remesh is vtkCVTRemeshFilter's of the triangulated image: a vertex per
+// site by default, as on the OpenGL engine; CollapseForValence on lets it collapse edges where
+// that brings valences closer to 6, a vertex fewer each, with the same sites.
+TEST(SurfaceFilter, CollapseForValenceReachesTheCpuRemesh)
+{
+  vtkNew<vtkCVTGeometryImageSource> source;
+  source->SetResolution(256, 128);
+  const auto run = [&source](bool collapse)
+  {
+    vtkSmartPointer<vtkCVTSurfaceFilter> cvt = vtkSmartPointer<vtkCVTSurfaceFilter>::New();
+    cvt->SetInputConnection(source->GetOutputPort());
+    cvt->SetEngineToCPU();
+    cvt->SetNumberOfSites(600);
+    cvt->SetMaximumNumberOfIterations(30);
+    cvt->SetCollapseForValence(collapse);
+    cvt->Update();
+    return cvt;
+  };
+  const auto field = [](vtkPolyData* data, const char* name)
+  {
+    vtkDataArray* array = data->GetFieldData()->GetArray(name);
+    return array ? array->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
+  };
+  vtkSmartPointer<vtkCVTSurfaceFilter> keeping = run(false), collapsing = run(true);
+  EXPECT_FALSE(vtkNew<vtkCVTSurfaceFilter>()->GetCollapseForValence()); // the default
+  std::ostringstream printed;
+  collapsing->Print(printed);
+  EXPECT_NE(printed.str().find("CollapseForValence: on"), std::string::npos);
+  vtkPolyData* kept = keeping->GetRemeshOutput();
+  vtkPolyData* collapsed = collapsing->GetRemeshOutput();
+  EXPECT_EQ(kept->GetNumberOfPoints(), 600);
+  EXPECT_EQ(field(kept, "ValenceCollapses"), 0);
+  const double collapses = field(collapsed, "ValenceCollapses");
+  EXPECT_GT(collapses, 0);
+  EXPECT_EQ(collapsed->GetNumberOfPoints() + collapses, 600);
+  EXPECT_GT(field(collapsed, "InteriorValence6Fraction"), field(kept, "InteriorValence6Fraction"));
+  EXPECT_EQ(
+    field(keeping->GetSitesOutput(), "Energy"), field(collapsing->GetSitesOutput(), "Energy"));
+  const MeshCheck mesh = CheckMesh(collapsed);
+  EXPECT_EQ(mesh.NonManifoldEdges, 0);
+  EXPECT_EQ(mesh.Euler(), 0);
+  std::cout << "[ measured ] torus, 600 sites on the CPU engine: valence 6 "
+            << field(kept, "InteriorValence6Fraction") << " -> "
+            << field(collapsed, "InteriorValence6Fraction") << " with " << collapses
+            << " collapses\n";
 }
 
 TEST(SurfaceFilter, WarnsWhenTheGeometryImageIsTooCoarse)

@@ -157,6 +157,18 @@ def main(plugin, data_dir, output_dir):
         check(info.GetNumberOfPoints() == 60 and info.GetNumberOfCells() == 2 * 60 - 4,
               "the OFF octahedron remeshes to a closed genus-0 mesh of 60 vertices (%d, %d)" %
               (info.GetNumberOfPoints(), info.GetNumberOfCells()))
+    # CollapseForValence (on for meshes, off for geometry images) reaches both filters.
+    collapsing = [(surface, 0)] + ([(off_remesh, 1)] if off_reader is not None else [])
+    for proxy, default in collapsing:
+        check(proxy.CollapseForValence == default,
+              "%s: CollapseForValence defaults to %d" % (proxy.GetXMLName(), default))
+        proxy.CollapseForValence = 1 - default
+        proxy.UpdateVTKObjects()
+        check("CollapseForValence: %s" % ("on" if default == 0 else "off")
+              in str(proxy.GetClientSideObject()),
+              "%s: CollapseForValence reaches the filter" % proxy.GetXMLName())
+        proxy.CollapseForValence = default
+        proxy.UpdateVTKObjects()
 
     # The first picture of Show(), as pvpython gives it: the plugin's display hints.
     first_view = CreateView("RenderView")
