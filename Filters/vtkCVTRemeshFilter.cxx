@@ -199,20 +199,20 @@ bool SettleUnderCellSizes(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh
     error = engine.GetLastError();
     return false;
   }
-  cvt::SurfaceMesh sized = mesh;
-  sized.Density = cvt::DensityOfCellSizes(mesh, engine.GetPointLabels(), sums.Mass);
-  cvt::RestrictedVoronoi sizedEngine;
-  cvt::RestrictedProblem problem(sizedEngine);
+  // The engine's own mesh under the sizing density for the settling, then under its own again.
+  cvt::RestrictedProblem problem(engine);
   cvt::OptimizerOptions settle;
   settle.MaximumNumberOfIterations = SettledIterations;
   cvt::OptimizerResult settled;
   cvt::RestrictedDual dual;
-  if (!sizedEngine.SetMesh(sized) ||
-    !cvt::RunLloyd(problem, cvt::SiteState{ best.Sites, {} }, settle, nullptr, settled, error) ||
-    !engine.SetSites(settled.Sites) || !engine.ComputeDual(dual))
+  const bool sized =
+    engine.SetDensity(cvt::DensityOfCellSizes(mesh, engine.GetPointLabels(), sums.Mass)) &&
+    cvt::RunLloyd(problem, cvt::SiteState{ best.Sites, {} }, settle, nullptr, settled, error);
+  if (!engine.SetDensity(mesh.Density) || !sized || !engine.SetSites(settled.Sites) ||
+    !engine.ComputeDual(dual))
   {
-    error = "the settling of the added sites failed: " +
-      (error.empty() ? sizedEngine.GetLastError() + engine.GetLastError() : error);
+    error =
+      "the settling of the added sites failed: " + (error.empty() ? engine.GetLastError() : error);
     return false;
   }
   if (TopologyMismatch(cvt::RemeshTopology(dual, input.Loops.size()), input) == 0)

@@ -97,6 +97,7 @@ struct RestrictedVoronoi::Internals
   /// Per triangle: density-weighted mass, centroid and integral of rho |x - centroid|^2, so a
   /// triangle inside one cell costs a few operations: E = J + m |g - s|^2.
   std::vector<Piece> TriangleMoments;
+  void ComputeTriangleMoments();
 
   std::vector<int> PointLabels;
   int BlockCount = 1;
@@ -1002,17 +1003,24 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
   d.BlockTriples.assign(d.BlockCount, {});
   d.BlockContacts.assign(d.BlockCount, {});
   d.PointLabels.assign(mesh.NumberOfPoints(), -1);
-  d.TriangleMoments.resize(triangleCount);
+  d.ComputeTriangleMoments();
+  return true;
+}
+
+void RestrictedVoronoi::Internals::ComputeTriangleMoments()
+{
+  const int triangleCount = this->Mesh.NumberOfTriangles();
+  this->TriangleMoments.resize(triangleCount);
   vtkSMPTools::For(0, triangleCount, 4096,
-    [&d](int begin, int end)
+    [this](int begin, int end)
     {
       Polygon polygon;
       for (int t = begin; t < end; ++t)
       {
-        d.WholeTriangle(t, polygon);
+        this->WholeTriangle(t, polygon);
         Piece about;
-        d.Integrate(t, polygon.V[0].P, polygon, about);
-        Piece& whole = d.TriangleMoments[t];
+        this->Integrate(t, polygon.V[0].P, polygon, about);
+        Piece& whole = this->TriangleMoments[t];
         whole.Mass = about.Mass;
         for (int k = 0; k < 3; ++k)
         {
@@ -1020,10 +1028,32 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
           whole.Moment[k] =
             polygon.V[0].P[k] + (about.Mass > 0.0 ? about.Moment[k] / about.Mass : 0.0);
         }
-        d.Integrate(t, whole.Moment, polygon, about);
+        this->Integrate(t, whole.Moment, polygon, about);
         whole.Energy = about.Energy;
       }
     });
+}
+
+//------------------------------------------------------------------------------
+bool RestrictedVoronoi::SetDensity(const std::vector<double>& density)
+{
+  Internals& d = *this->Impl;
+  if (d.Mesh.Triangles.empty())
+  {
+    return this->Fail("set a mesh before its density");
+  }
+  if (!density.empty() && density.size() != static_cast<size_t>(d.Mesh.NumberOfPoints()))
+  {
+    return this->Fail("the density has " + std::to_string(density.size()) +
+      " values for a mesh of " + std::to_string(d.Mesh.NumberOfPoints()) + " points");
+  }
+  if (!std::all_of(
+        density.begin(), density.end(), [](double v) { return std::isfinite(v) && v >= 0.0; }))
+  {
+    return this->Fail("the density must be finite and not negative at every point");
+  }
+  d.Mesh.Density = density;
+  d.ComputeTriangleMoments();
   return true;
 }
 

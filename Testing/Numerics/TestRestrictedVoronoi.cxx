@@ -292,6 +292,47 @@ TEST(RestrictedVoronoi, CurvedMeshMatchesBruteForce)
   EXPECT_NEAR(mass, bruteMass, 1e-9 * mass);
 }
 
+TEST(RestrictedVoronoi, SetDensityGivesTheSumsOfTheMeshWithThatDensity)
+{
+  cvt::SurfaceMesh mesh = Sphere(3);
+  const std::vector<double> sites = SitesNearSphere(40, 5);
+  std::vector<double> density(mesh.NumberOfPoints());
+  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    density[p] = 2.0 + mesh.Point(p)[2];
+  }
+  cvt::RestrictedVoronoi engine;
+  cvt::CellSums swapped, back, uniform;
+  ASSERT_TRUE(engine.SetMesh(mesh) && engine.SetSites(sites) && engine.ComputeCellSums(uniform));
+  ASSERT_TRUE(engine.SetDensity(density) && engine.ComputeCellSums(swapped));
+  cvt::SurfaceMesh weighted = mesh;
+  weighted.Density = density;
+  const cvt::CellSums brute = BruteForceSums(weighted, sites, 24);
+  EXPECT_NEAR(swapped.TotalEnergy(), brute.TotalEnergy(), 2e-3 * brute.TotalEnergy());
+  // The same sums as an engine given the mesh with that density.
+  cvt::RestrictedVoronoi fresh;
+  cvt::CellSums expected;
+  ASSERT_TRUE(fresh.SetMesh(weighted) && fresh.SetSites(sites) && fresh.ComputeCellSums(expected));
+  EXPECT_EQ(swapped.Mass, expected.Mass);
+  EXPECT_EQ(swapped.Energy, expected.Energy);
+  EXPECT_EQ(swapped.MomentX, expected.MomentX);
+  // Back to uniform (empty), then refused densities leave the engine as it was.
+  ASSERT_TRUE(engine.SetDensity({}) && engine.ComputeCellSums(back));
+  EXPECT_EQ(back.Energy, uniform.Energy);
+  EXPECT_FALSE(engine.SetDensity(std::vector<double>(3, 1.0)));
+  EXPECT_NE(engine.GetLastError().find("3 values for a mesh of"), std::string::npos)
+    << engine.GetLastError();
+  density[7] = -1.0;
+  EXPECT_FALSE(engine.SetDensity(density));
+  density[7] = std::nan("");
+  EXPECT_FALSE(engine.SetDensity(density));
+  EXPECT_NE(engine.GetLastError().find("not negative"), std::string::npos);
+  ASSERT_TRUE(engine.ComputeCellSums(back));
+  EXPECT_EQ(back.Energy, uniform.Energy);
+  cvt::RestrictedVoronoi empty;
+  EXPECT_FALSE(empty.SetDensity({}));
+}
+
 TEST(RestrictedVoronoi, GradientIsMinusTwiceTheMoment)
 {
   const cvt::SurfaceMesh mesh = Sphere(3);
