@@ -9,7 +9,6 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
-#include <bitset>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -129,8 +128,12 @@ struct RestrictedVoronoi::Internals
   void WholeTriangle(int t, Polygon& polygon) const;
   void Barycentric(int t, const double* p, double* lambda) const;
   void Contact(int t, int site, const Polygon& polygon, SiteContact& contact) const;
+  /// The Euler characteristic of each cell part, and where sites would cut the parts that are
+  /// not disks. `pieces` are in triangle order (those of triangle t from firstPiece[t]); bit k
+  /// of firstHolder: the piece is the first of its cell to hold its triangle's corner k.
   void FindNonDiskParts(const std::vector<const SiteContact*>& pieces,
-    const std::vector<int>& vertexOfPiece, RestrictedDual& dual) const;
+    const std::vector<int>& firstPiece, const std::vector<int>& vertexOfPiece,
+    const std::vector<std::uint8_t>& firstHolder, RestrictedDual& dual) const;
 };
 
 //------------------------------------------------------------------------------
@@ -502,70 +505,103 @@ void RestrictedVoronoi::Internals::Contact(
 // triangle's border counts 1 - (its edge segments without their ends) - (its corners); an edge
 // segment counts 1 - (the edge's end points it holds); a point counts 1.
 void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const SiteContact*>& pieces,
-  const std::vector<int>& vertexOfPiece, RestrictedDual& dual) const
+  const std::vector<int>& firstPiece, const std::vector<int>& vertexOfPiece,
+  const std::vector<std::uint8_t>& firstHolder, RestrictedDual& dual) const
 {
   const size_t vertexCount = dual.Sites.size();
   dual.EulerCharacteristic.assign(vertexCount, 0);
   dual.SplitPoints.clear();
   dual.ThinParts = 0;
-  // What the mesh edges and points the pieces hold add, each once per part. Each is a key
-  // (first point, second point + 1 or 0, what it adds + 1), bucketed by part (counted, then
-  // filled) and sorted within each part: far quicker than one sort of them all.
-  const auto sharedKey = [](int first, int second, int adds)
-  {
-    return (static_cast<std::uint64_t>(first) << 33) |
-      (static_cast<std::uint64_t>(second + 1) << 2) | static_cast<std::uint64_t>(adds + 1);
-  };
-  std::vector<size_t> partStart(vertexCount + 1, 0);
-  for (size_t p = 0; p < pieces.size(); ++p)
-  {
-    partStart[vertexOfPiece[p] + 1] +=
-      std::bitset<3>(pieces[p]->CornerMask).count() + std::bitset<3>(pieces[p]->EdgeMask).count();
-  }
-  std::partial_sum(partStart.begin(), partStart.end(), partStart.begin());
-  std::vector<size_t> cursor(partStart.begin(), partStart.end() - 1);
-  std::vector<std::uint64_t> shared(partStart[vertexCount]);
-  for (size_t p = 0; p < pieces.size(); ++p)
-  {
-    const SiteContact& c = *pieces[p];
-    const auto& tri = this->Mesh.Triangles[c.Triangle];
-    const int part = vertexOfPiece[p];
-    int euler = 1;
-    for (int k = 0; k < 3; ++k)
+  // What the mesh edges and points the pieces hold add, each once per part. A point is counted
+  // by its first holder (firstHolder); an edge between two triangles by the piece in the first
+  // of them when the other triangle's piece of the cell holds it too and with the same ends.
+  // Edges of one triangle or of more than two are keys (first point, second point, what it adds
+  // + 1) sorted by part: few.
+  std::vector<int> pieceEuler(pieces.size());
+  std::vector<std::uint8_t> unpaired(pieces.size(), 0); // bit k: edge k has no triangle across
+  vtkSMPTools::For(0, static_cast<vtkIdType>(pieces.size()),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const int next = (k + 1) % 3;
-      const int corner = (c.CornerMask >> k) & 1;
-      if (corner)
+      for (vtkIdType p = begin; p < end; ++p)
       {
-        euler -= 1;
-        shared[cursor[part]++] = sharedKey(tri[k], -1, 1);
-      }
-      if ((c.EdgeMask >> k) & 1)
-      {
-        const int ends = corner + ((c.CornerMask >> next) & 1);
-        euler -= 1 - ends;
-        shared[cursor[part]++] =
-          sharedKey(std::min(tri[k], tri[next]), std::max(tri[k], tri[next]), 1 - ends);
-      }
-    }
-    dual.EulerCharacteristic[part] += euler;
-  }
-  vtkSMPTools::For(0, static_cast<vtkIdType>(vertexCount),
-    [&](vtkIdType firstPart, vtkIdType lastPart)
-    {
-      for (vtkIdType v = firstPart; v < lastPart; ++v)
-      {
-        const auto first = shared.begin() + partStart[v], last = shared.begin() + partStart[v + 1];
-        std::sort(first, last);
-        for (auto key = first; key != last; ++key)
+        const SiteContact& c = *pieces[p];
+        const auto& tri = this->Mesh.Triangles[c.Triangle];
+        int euler = 1;
+        for (int k = 0; k < 3; ++k)
         {
-          if (key == first || (*key >> 2) != (*(key - 1) >> 2))
+          const int next = (k + 1) % 3;
+          const int corner = (c.CornerMask >> k) & 1;
+          if (corner)
           {
-            dual.EulerCharacteristic[v] += static_cast<int>(*key & 3u) - 1;
+            euler -= 1 - ((firstHolder[p] >> k) & 1);
+          }
+          if (!((c.EdgeMask >> k) & 1))
+          {
+            continue;
+          }
+          const int ends = corner + ((c.CornerMask >> next) & 1);
+          euler -= 1 - ends;
+          const int across = this->Adjacent[c.Triangle][k];
+          if (across < 0)
+          {
+            unpaired[p] |= static_cast<std::uint8_t>(1u << k);
+            continue;
+          }
+          bool sharedFirst = false; // the other piece holds it alike and comes first
+          for (int q = firstPiece[across]; q < firstPiece[across + 1]; ++q)
+          {
+            if (pieces[q]->Site != c.Site)
+            {
+              continue;
+            }
+            const auto& other = this->Mesh.Triangles[across];
+            for (int j = 0; j < 3; ++j)
+            {
+              const int after = (j + 1) % 3;
+              const bool sameEdge = std::minmax(other[j], other[after]) ==
+                std::minmax(tri[k], tri[next]); // either way round
+              if (sameEdge && ((pieces[q]->EdgeMask >> j) & 1))
+              {
+                const int otherEnds =
+                  ((pieces[q]->CornerMask >> j) & 1) + ((pieces[q]->CornerMask >> after) & 1);
+                sharedFirst = otherEnds == ends && across < c.Triangle;
+              }
+            }
+            break;
+          }
+          if (!sharedFirst)
+          {
+            euler += 1 - ends;
           }
         }
+        pieceEuler[p] = euler;
       }
     });
+  std::vector<std::pair<int, std::uint64_t>> otherEdges;
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    const int part = vertexOfPiece[p];
+    dual.EulerCharacteristic[part] += pieceEuler[p];
+    for (int k = 0; k < 3 && unpaired[p]; ++k)
+    {
+      if ((unpaired[p] >> k) & 1)
+      {
+        const auto& tri = this->Mesh.Triangles[pieces[p]->Triangle];
+        const int next = (k + 1) % 3;
+        const int ends = ((pieces[p]->CornerMask >> k) & 1) + ((pieces[p]->CornerMask >> next) & 1);
+        otherEdges.emplace_back(part,
+          (static_cast<std::uint64_t>(std::min(tri[k], tri[next])) << 33) |
+            (static_cast<std::uint64_t>(std::max(tri[k], tri[next])) << 2) |
+            static_cast<std::uint64_t>(2 - ends));
+      }
+    }
+  }
+  std::sort(otherEdges.begin(), otherEdges.end());
+  otherEdges.erase(std::unique(otherEdges.begin(), otherEdges.end()), otherEdges.end());
+  for (const auto& [part, key] : otherEdges)
+  {
+    dual.EulerCharacteristic[part] += static_cast<int>(key & 3u) - 1;
+  }
   // Parts that are not disks, and parts whose shared border has several pieces (they wrap
   // round a thin part and meet on both sides: their edge has more than two triangles).
   std::vector<char> wrapping(vertexCount, 0);
@@ -1229,6 +1265,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   // looked up by cell.
   std::vector<int> holderOfPoint(d.Mesh.NumberOfPoints(), -1);
   std::unordered_map<std::uint64_t, int> otherHolders;
+  std::vector<std::uint8_t> firstHolder(pieces.size(), 0); // bit k: first to hold corner k
   for (size_t p = 0; p < pieces.size(); ++p)
   {
     for (int k = 0; k < 3; ++k)
@@ -1255,6 +1292,10 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         if (other >= 0)
         {
           parent[find(static_cast<int>(p))] = find(other);
+        }
+        else
+        {
+          firstHolder[p] |= static_cast<std::uint8_t>(1u << k);
         }
       }
     }
@@ -1412,7 +1453,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         dual.BoundaryTriangles[i], &dual.BoundaryPoints[3 * i], &dual.BoundaryBarycentric[3 * i]);
     }
   }
-  d.FindNonDiskParts(pieces, vertexOfPiece, dual);
+  d.FindNonDiskParts(pieces, firstPiece, vertexOfPiece, firstHolder, dual);
   return true;
 }
 
