@@ -1219,11 +1219,21 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
     ++firstPiece[c->Triangle + 1];
   }
   std::partial_sum(firstPiece.begin(), firstPiece.end(), firstPiece.begin());
+  // The pieces' sites side by side: looked up across edges and at points, far from the piece.
+  std::vector<int> siteOfPiece(pieces.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(pieces.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        siteOfPiece[p] = pieces[p]->Site;
+      }
+    });
   const auto pieceOf = [&](int site, int triangle)
   {
     for (int p = firstPiece[triangle]; p < firstPiece[triangle + 1]; ++p)
     {
-      if (pieces[p]->Site == site)
+      if (siteOfPiece[p] == site)
       {
         return p;
       }
@@ -1252,7 +1262,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       {
         continue;
       }
-      const int found = pieceOf(pieces[p]->Site, across);
+      const int found = pieceOf(siteOfPiece[p], across);
       if (found >= 0)
       {
         parent[find(static_cast<int>(p))] = find(found);
@@ -1279,14 +1289,14 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         {
           holder = static_cast<int>(p);
         }
-        else if (pieces[holder]->Site == pieces[p]->Site)
+        else if (siteOfPiece[holder] == siteOfPiece[p])
         {
           other = holder;
         }
         else
         {
           const auto found =
-            otherHolders.emplace(DirectedKey(pieces[p]->Site, point), static_cast<int>(p));
+            otherHolders.emplace(DirectedKey(siteOfPiece[p], point), static_cast<int>(p));
           other = found.second ? -1 : found.first->second;
         }
         if (other >= 0)
