@@ -44,24 +44,33 @@ struct Piece
   double Mass, Moment[3], Energy;
 };
 
-/// What the dual pass learns about a site from one triangle.
+/// What the dual pass learns about a site from one triangle (one per cell and triangle: a
+/// million for a large mesh, hence small).
 struct SiteContact
 {
   int Site;
   int Triangle;
   double Distance2; // from the site to the nearest point of its part of the triangle
   double Point[3];
-  int BoundaryRank;         // 0: none, 1: boundary edge point, 2: boundary corner
   double BoundaryDistance2; // corners: from the site to BoundaryPoint
   double BoundaryPoint[3];
-  // The parts of the mesh border in this piece of the cell (at most one per triangle edge).
-  int SegmentCount;
-  double Segments[3][6];
-  bool TouchesBorder; // one of the segments is on the mesh's border (not a feature line)
   double Area;        // of this piece of the cell
   double Centroid[3]; // of this piece of the cell
-  int EdgeMask;       // bit e: the piece runs along edge e of its triangle (length > 0)
-  int CornerMask;     // bit k: the piece holds corner k of its triangle
+  // The parts of the mesh border in this piece of the cell (at most one per triangle edge):
+  // SegmentCount segments from FirstSegment in the list's Segments.
+  int FirstSegment;
+  std::uint8_t SegmentCount;
+  std::uint8_t BoundaryRank; // 0: none, 1: boundary edge point, 2: boundary corner
+  std::uint8_t EdgeMask;     // bit e: the piece runs along edge e of its triangle (length > 0)
+  std::uint8_t CornerMask;   // bit k: the piece holds corner k of its triangle
+  bool TouchesBorder;        // one of the segments is on the mesh's border (not a feature line)
+};
+
+/// The contacts of a block of triangles, and the border segments they hold (x0 y0 z0 x1 y1 z1).
+struct ContactList
+{
+  std::vector<SiteContact> Contacts;
+  std::vector<std::array<double, 6>> Segments;
 };
 
 /// Nearest sites kept per site for clipping (more are asked of the k-d tree when a cell needs
@@ -104,7 +113,7 @@ struct RestrictedVoronoi::Internals
   std::vector<std::vector<std::array<int, 4>>> BlockTriples; // sites i, j, k and the triangle
   std::vector<std::array<int, 3>> Adjacent; // per triangle edge: the triangle across it, or -1
   std::vector<int> TriangleParts;           // per triangle: its connected part of the mesh
-  std::vector<std::vector<SiteContact>> BlockContacts;
+  std::vector<ContactList> BlockContacts;
 
   void LabelPoints();
   /// Clips the triangles of blocks [firstBlock, lastBlock) (all of them for the dual).
@@ -120,14 +129,14 @@ struct RestrictedVoronoi::Internals
     int Mark = 0;
   };
   void ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
-    std::vector<std::array<int, 4>>& triples, std::vector<SiteContact>& contacts,
-    Scratch& scratch) const;
+    std::vector<std::array<int, 4>>& triples, ContactList& contacts, Scratch& scratch) const;
   const Polygon* ClipToCell(int t, int site, Polygon& polygon, Polygon& spare,
     std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const;
   void Integrate(int t, const double* s, const Polygon& polygon, Piece& piece) const;
   void WholeTriangle(int t, Polygon& polygon) const;
   void Barycentric(int t, const double* p, double* lambda) const;
-  void Contact(int t, int site, const Polygon& polygon, SiteContact& contact) const;
+  /// Appends the contact of `site`'s piece `polygon` of triangle t to `list`.
+  void Contact(int t, int site, const Polygon& polygon, ContactList& list) const;
   /// The Euler characteristic of each cell part, and where sites would cut the parts that are
   /// not disks. `pieces` are in triangle order (those of triangle t from firstPiece[t]); bit k
   /// of firstHolder: the piece is the first of its cell to hold its triangle's corner k.
@@ -394,14 +403,16 @@ void RestrictedVoronoi::Internals::Integrate(
 // The nearest point of the polygon to its site, and its boundary part (edges on the mesh
 // boundary, corners first).
 void RestrictedVoronoi::Internals::Contact(
-  int t, int site, const Polygon& polygon, SiteContact& contact) const
+  int t, int site, const Polygon& polygon, ContactList& list) const
 {
+  SiteContact& contact = list.Contacts.emplace_back();
   const double* s = &this->Sites[3 * static_cast<size_t>(site)];
   const double* n = &this->Normals[3 * static_cast<size_t>(t)];
   contact.Site = site;
   contact.Triangle = t;
   contact.BoundaryRank = 0;
   contact.BoundaryDistance2 = std::numeric_limits<double>::infinity();
+  contact.FirstSegment = static_cast<int>(list.Segments.size());
   contact.SegmentCount = 0;
   contact.TouchesBorder = false;
   contact.EdgeMask = 0;
@@ -481,19 +492,20 @@ void RestrictedVoronoi::Internals::Contact(
     }
     if (a.Label < 0 && length2 > 0.0)
     {
-      contact.EdgeMask |= 1 << (-1 - a.Label);
+      contact.EdgeMask |= static_cast<std::uint8_t>(1u << (-1 - a.Label));
     }
     if (a.Origin >= 0)
     {
-      contact.CornerMask |= 1 << a.Origin;
+      contact.CornerMask |= static_cast<std::uint8_t>(1u << a.Origin);
     }
     if (a.Label < 0 && this->OnMeshBoundary[t][-1 - a.Label] && contact.SegmentCount < 3)
     {
       contact.TouchesBorder |= this->OnMeshBoundary[t][-1 - a.Label] == 1;
-      contact.BoundaryRank = std::max(contact.BoundaryRank, 1);
-      double* segment = contact.Segments[contact.SegmentCount++];
-      std::copy(a.P, a.P + 3, segment);
-      std::copy(b.P, b.P + 3, segment + 3);
+      contact.BoundaryRank = std::max<std::uint8_t>(contact.BoundaryRank, 1);
+      std::array<double, 6>& segment = list.Segments.emplace_back();
+      std::copy(a.P, a.P + 3, segment.begin());
+      std::copy(b.P, b.P + 3, segment.begin() + 3);
+      ++contact.SegmentCount;
     }
   }
 }
@@ -659,8 +671,7 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
 
 //------------------------------------------------------------------------------
 void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
-  std::vector<std::array<int, 4>>& triples, std::vector<SiteContact>& contacts,
-  Scratch& scratch) const
+  std::vector<std::array<int, 4>>& triples, ContactList& contacts, Scratch& scratch) const
 {
   const auto& tri = this->Mesh.Triangles[t];
   const int l0 = this->PointLabels[tri[0]], l1 = this->PointLabels[tri[1]],
@@ -684,8 +695,7 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
     if (dual)
     {
       this->WholeTriangle(t, polygon);
-      contacts.emplace_back();
-      this->Contact(t, l0, polygon, contacts.back());
+      this->Contact(t, l0, polygon, contacts);
     }
     return;
   }
@@ -742,8 +752,7 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
     }
     if (dual)
     {
-      contacts.emplace_back();
-      this->Contact(t, site, *clipped, contacts.back());
+      this->Contact(t, site, *clipped, contacts);
     }
   }
 }
@@ -813,10 +822,11 @@ void RestrictedVoronoi::Internals::Sweep(bool dual, int firstBlock, int lastBloc
       {
         std::vector<Piece>& pieces = this->BlockPieces[block];
         std::vector<std::array<int, 4>>& triples = this->BlockTriples[block];
-        std::vector<SiteContact>& contacts = this->BlockContacts[block];
+        ContactList& contacts = this->BlockContacts[block];
         pieces.clear();
         triples.clear();
-        contacts.clear();
+        contacts.Contacts.clear();
+        contacts.Segments.clear();
         const int end = std::min(triangleCount, (block + 1) * blockSize);
         for (int t = block * blockSize; t < end; ++t)
         {
@@ -1199,18 +1209,32 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   // The pieces (one per cell and triangle), in block order, hence in triangle order: those of
   // triangle t are [firstPiece[t], firstPiece[t + 1]), a few at most, searched for a cell's.
   std::vector<const SiteContact*> pieces;
-  for (const auto& block : d.BlockContacts)
+  std::vector<const std::array<double, 6>*> segmentsOf; // per piece: its border segments
+  for (const ContactList& block : d.BlockContacts)
   {
-    for (const SiteContact& c : block)
+    for (const SiteContact& c : block.Contacts)
     {
       pieces.push_back(&c);
+      segmentsOf.push_back(block.Segments.data() + c.FirstSegment);
     }
   }
   const auto byTriangle = [](const SiteContact* a, const SiteContact* b)
   { return a->Triangle < b->Triangle; };
   if (!std::is_sorted(pieces.begin(), pieces.end(), byTriangle))
   {
-    std::stable_sort(pieces.begin(), pieces.end(), byTriangle);
+    std::vector<size_t> order(pieces.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+      [&pieces, &byTriangle](size_t a, size_t b) { return byTriangle(pieces[a], pieces[b]); });
+    std::vector<const SiteContact*> sortedPieces(pieces.size());
+    std::vector<const std::array<double, 6>*> sortedSegments(pieces.size());
+    for (size_t i = 0; i < order.size(); ++i)
+    {
+      sortedPieces[i] = pieces[order[i]];
+      sortedSegments[i] = segmentsOf[order[i]];
+    }
+    pieces.swap(sortedPieces);
+    segmentsOf.swap(sortedSegments);
   }
   const int triangleCount = d.Mesh.NumberOfTriangles();
   std::vector<int> firstPiece(triangleCount + 1, 0);
@@ -1385,12 +1409,12 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         std::copy(c.BoundaryPoint, c.BoundaryPoint + 3, &dual.BoundaryPoints[3 * i]);
         dual.BoundaryTriangles[i] = c.Triangle;
       }
-      boundaryRank[i] = std::max(boundaryRank[i], c.BoundaryRank);
+      boundaryRank[i] = std::max(boundaryRank[i], static_cast<int>(c.BoundaryRank));
       dual.OnBoundary[i] |= c.TouchesBorder ? 1 : 0;
       cellArea[i] += c.Area;
       for (int s = 0; s < c.SegmentCount; ++s)
       {
-        const double* segment = c.Segments[s];
+        const double* segment = segmentsOf[p][s].data();
         const double length = std::sqrt(Distance2(segment, segment + 3));
         borderLength[i] += length;
         for (int k = 0; k < 3; ++k)
@@ -1431,7 +1455,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         borderMoment[3 * i + 1] / borderLength[i], borderMoment[3 * i + 2] / borderLength[i] };
       for (int s = 0; s < c.SegmentCount; ++s)
       {
-        const double* a = c.Segments[s];
+        const double* a = segmentsOf[p][s].data();
         const double e[3] = { a[3] - a[0], a[4] - a[1], a[5] - a[2] };
         const double w[3] = { target[0] - a[0], target[1] - a[1], target[2] - a[2] };
         const double length2 = Dot(e, e);
