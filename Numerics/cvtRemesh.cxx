@@ -2579,9 +2579,11 @@ RemeshFidelity MeasureFidelity(
   vtkSMPTools::For(0, static_cast<vtkIdType>(distance.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
+      int guess = -1; // the nearest triangle to the point before (probes come in mesh order)
       for (vtkIdType p = begin; p < end; ++p)
       {
-        distance[static_cast<size_t>(p)] = onRemesh.DistanceTo(&probes[3 * static_cast<size_t>(p)]);
+        distance[static_cast<size_t>(p)] =
+          onRemesh.DistanceTo(&probes[3 * static_cast<size_t>(p)], &guess);
       }
     });
   // The remesh measured likewise against the input.
@@ -2590,10 +2592,11 @@ RemeshFidelity MeasureFidelity(
   vtkSMPTools::For(0, static_cast<vtkIdType>(lift.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
+      int guess = -1;
       for (vtkIdType p = begin; p < end; ++p)
       {
         lift[static_cast<size_t>(p)] =
-          input.Projector.DistanceTo(&remeshPoints[3 * static_cast<size_t>(p)]);
+          input.Projector.DistanceTo(&remeshPoints[3 * static_cast<size_t>(p)], &guess);
       }
     });
   fidelity.InputToRemesh = *std::max_element(distance.begin(), distance.end()) / diagonal;

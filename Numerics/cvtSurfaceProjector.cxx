@@ -38,6 +38,16 @@ public:
   {
   }
 
+  /// Starts from triangle t (a guess: the search then only looks for nearer ones).
+  void Start(int t)
+  {
+    const auto& tri = this->Mesh.Triangles[static_cast<size_t>(t)];
+    ClosestPointOnTriangle(this->P, this->Mesh.Point(tri[0]), this->Mesh.Point(tri[1]),
+      this->Mesh.Point(tri[2]), this->Q, this->W);
+    this->Best2 = Distance2(this->Q, this->P);
+    this->Best = t;
+  }
+
   void Walk(const SizeClass& sizeClass)
   {
     this->Class = &sizeClass;
@@ -203,9 +213,13 @@ SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
 
 SurfaceProjector::~SurfaceProjector() = default;
 
-int SurfaceProjector::Nearest(const double* p, double q[3], double w[3]) const
+int SurfaceProjector::Nearest(const double* p, double q[3], double w[3], int guess) const
 {
   NearestTriangleSearch search(this->Mesh, p);
+  if (guess >= 0 && guess < this->Mesh.NumberOfTriangles())
+  {
+    search.Start(guess);
+  }
   for (const auto& sizeClass : this->Internal->Classes)
   {
     search.Walk(*sizeClass);
@@ -218,16 +232,22 @@ int SurfaceProjector::Nearest(const double* p, double q[3], double w[3]) const
   return search.Best;
 }
 
-double SurfaceProjector::DistanceTo(const double p[3]) const
+double SurfaceProjector::DistanceTo(const double p[3], int* guess) const
 {
   double q[3], w[3];
-  return this->Nearest(p, q, w) >= 0 ? std::sqrt(Distance2(q, p)) : 0.0;
+  const int nearest = this->Nearest(p, q, w, guess ? *guess : -1);
+  if (guess)
+  {
+    *guess = nearest;
+  }
+  return nearest >= 0 ? std::sqrt(Distance2(q, p)) : 0.0;
 }
 
 double SurfaceProjector::FarthestCentroid(
   const std::vector<std::array<const double*, 3>>& triangles) const
 {
   double farthest = 0.0;
+  int guess = -1; // the triangles are mostly neighbours (round a vertex, across an edge)
   for (const auto& t : triangles)
   {
     double c[3];
@@ -235,7 +255,7 @@ double SurfaceProjector::FarthestCentroid(
     {
       c[k] = (t[0][k] + t[1][k] + t[2][k]) / 3.0;
     }
-    farthest = std::max(farthest, this->DistanceTo(c));
+    farthest = std::max(farthest, this->DistanceTo(c, &guess));
   }
   return farthest;
 }

@@ -29,11 +29,13 @@ public:
   SurfaceProjector& operator=(const SurfaceProjector&) = delete;
 
   /// The nearest point `q` of the surface to `p` and its barycentric weights `w` in the returned
-  /// triangle (-1 and `q`, `w` untouched when the surface has no triangle).
-  int Nearest(const double* p, double q[3], double w[3]) const;
+  /// triangle (-1 and `q`, `w` untouched when the surface has no triangle). A `guess` of the
+  /// triangle (the nearest to a point close by) makes the search quicker.
+  int Nearest(const double* p, double q[3], double w[3], int guess = -1) const;
 
-  /// How far `p` is from the surface (0 when it has no triangle).
-  double DistanceTo(const double p[3]) const;
+  /// How far `p` is from the surface (0 when it has no triangle). With `guess`: a guess of the
+  /// nearest triangle as for Nearest, replaced by the nearest (for the next point along).
+  double DistanceTo(const double p[3], int* guess = nullptr) const;
 
   /// How far the farthest centroid of `triangles` (three points each) is from the surface: a
   /// change of a remesh must not cut across a crease (the input would then lie far from it).

@@ -1686,6 +1686,18 @@ TEST(SurfaceMesh, ProjectorFindsTheNearestPointExactly)
     ASSERT_GE(t, 0);
     EXPECT_NEAR(cvt::Distance2(p, q), nearest, 1e-12)
       << "at " << p[0] << " " << p[1] << " " << p[2];
+    // A guess of the triangle, right, wrong or out of range, changes nothing but the speed; the
+    // guess is replaced by the nearest triangle.
+    for (int guess : { t, (t * 7 + i) % mesh.NumberOfTriangles(), -5, 1 << 30 })
+    {
+      double guessed[3], weights[3];
+      ASSERT_GE(projector.Nearest(p, guessed, weights, guess), 0);
+      EXPECT_NEAR(cvt::Distance2(p, guessed), nearest, 1e-12)
+        << "guess " << guess << " at " << p[0] << " " << p[1] << " " << p[2];
+      int chained = guess;
+      EXPECT_NEAR(projector.DistanceTo(p, &chained), std::sqrt(nearest), 1e-9);
+      EXPECT_GE(chained, 0);
+    }
     // q is the point of triangle t at weights w.
     const auto& tri = mesh.Triangles[static_cast<size_t>(t)];
     for (int k = 0; k < 3; ++k)
