@@ -805,32 +805,51 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
   const std::vector<std::vector<int>>& near = neighbourhoods.Near;
   const std::vector<std::vector<int>>& nearestTo = neighbourhoods.NearestTo;
   const auto probe = [&probes](int p) { return &probes[3 * static_cast<size_t>(p)]; };
+  // Per probe: which of its vertex's Near triangles was nearest when last measured, measured
+  // first the next time (moves are small: mostly still the nearest, so a probe nearer than the
+  // farthest so far is told after one triangle).
+  std::vector<std::uint8_t> nearestSlot(probes.size() / 3, 0);
   // The largest distance to the remesh of the points nearest to the vertices of `group`, and
-  // the farthest point.
-  const auto farthest = [&](const std::vector<int>& group, int& where)
+  // the farthest point; once beyond `bound`, the first point found beyond it.
+  const auto farthest = [&](const std::vector<int>& group, int& where,
+                          double bound = std::numeric_limits<double>::infinity())
   {
     double largest = 0.0;
     where = -1;
     for (int w : group)
     {
+      const std::vector<int>& triangles = near[static_cast<size_t>(w)];
       for (int p : nearestTo[static_cast<size_t>(w)])
       {
+        std::uint8_t& first = nearestSlot[static_cast<size_t>(p)];
         double nearest = std::numeric_limits<double>::max();
-        for (int t : near[static_cast<size_t>(w)])
+        size_t nearestAt = first;
+        for (size_t i = 0; i < triangles.size(); ++i)
         {
-          const std::array<int, 3>& c = remesh.Triangles[static_cast<size_t>(t)];
+          const size_t slot = i == 0 ? first : (i <= first ? i - 1 : i);
+          const std::array<int, 3>& c = remesh.Triangles[static_cast<size_t>(triangles[slot])];
           double q[3], weights[3];
           ClosestPointOnTriangle(probe(p), point(c[0]), point(c[1]), point(c[2]), q, weights);
-          nearest = std::min(nearest, Distance2(probe(p), q));
+          const double d2 = Distance2(probe(p), q);
+          if (d2 < nearest)
+          {
+            nearest = d2;
+            nearestAt = slot;
+          }
           if (nearest <= largest)
           {
             break; // not the farthest point: the rest of its triangles cannot change that
           }
         }
+        first = static_cast<std::uint8_t>(std::min<size_t>(nearestAt, 255));
         if (nearest > largest)
         {
           largest = nearest;
           where = p;
+          if (std::sqrt(largest) > bound)
+          {
+            return std::sqrt(largest); // the caller only asks whether it is beyond the bound
+          }
         }
       }
     }
@@ -971,10 +990,11 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
         }
         std::copy(q, q + 3, point(v));
         double smallest = 0.0, lift = 0.0;
-        if (fan(v, start.data(), smallest, lift) &&
+        // The cheaper tests first (the projections onto the input cost most).
+        if (farthest({ v }, ignored, 0.9 * ownBefore) < 0.9 * ownBefore &&
+          farthest(group, ignored, before) <= before && fan(v, start.data(), smallest, lift) &&
           smallest >= std::min(smallestBefore, FitCorner) &&
-          lift <= std::max(liftBefore, tolerance) && farthest({ v }, ignored) < 0.9 * ownBefore &&
-          farthest(group, ignored) <= before && (!onCrease || closeEnough()))
+          lift <= std::max(liftBefore, tolerance) && (!onCrease || closeEnough()))
         {
           remesh.SourceTriangles[static_cast<size_t>(v)] = triangle;
           std::copy(weights, weights + 3, &remesh.SourceBarycentric[3 * static_cast<size_t>(v)]);
