@@ -487,6 +487,32 @@ size_t SharedNeighbours(const std::vector<int>& of_u, const std::vector<int>& of
   return shared.size();
 }
 
+/// Collapses the edge (from, to): `from` goes into `to` (which stays where it is). The live
+/// triangles round `from` that hold `to` die; the others take `to` for `from` and join its
+/// list in `around`; `from`'s list is emptied.
+void CollapseInto(
+  Remesh& remesh, std::vector<std::vector<int>>& around, std::vector<char>& alive, int from, int to)
+{
+  for (int t : around[static_cast<size_t>(from)])
+  {
+    if (!alive[static_cast<size_t>(t)])
+    {
+      continue;
+    }
+    std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+    if (std::find(tri.begin(), tri.end(), to) != tri.end())
+    {
+      alive[static_cast<size_t>(t)] = 0;
+    }
+    else
+    {
+      std::replace(tri.begin(), tri.end(), from, to);
+      around[static_cast<size_t>(to)].push_back(t);
+    }
+  }
+  around[static_cast<size_t>(from)].clear();
+}
+
 /// Drops the triangles that collapses killed.
 void KeepLiveTriangles(Remesh& remesh, const std::vector<char>& alive)
 {
@@ -642,22 +668,7 @@ int CollapseThinTriangles(
       {
         continue;
       }
-      for (int k : around[static_cast<size_t>(bestFrom)])
-      {
-        if (alive[static_cast<size_t>(k)])
-        {
-          if (contains(k, bestTo))
-          {
-            alive[static_cast<size_t>(k)] = 0;
-          }
-          else
-          {
-            std::replace(remesh.Triangles[k].begin(), remesh.Triangles[k].end(), bestFrom, bestTo);
-            around[static_cast<size_t>(bestTo)].push_back(k);
-          }
-        }
-      }
-      around[static_cast<size_t>(bestFrom)].clear();
+      CollapseInto(remesh, around, alive, bestFrom, bestTo);
       ++collapsedThisRound;
     }
     collapsed += collapsedThisRound;
@@ -1840,14 +1851,13 @@ int CollapseTowardsValenceSix(Remesh& remesh, const std::vector<char>& pinned,
   // As far from the input as `tolerance` allows, or 0.3 of the median edge where that is
   // less (more sites: closer, as their remeshes are).
   const double reach = std::min(tolerance, 0.3 * std::sqrt(edges[edges.size() / 2].first));
-  std::vector<char> gone(remesh.SiteIds.size(), 0);
   int collapsed = 0;
   for (const auto& [unused, ab] : edges)
   {
     const auto [a, b] = ab;
-    if (gone[static_cast<size_t>(a)] || gone[static_cast<size_t>(b)])
+    if (around[static_cast<size_t>(a)].empty() || around[static_cast<size_t>(b)].empty())
     {
-      continue;
+      continue; // collapsed into another vertex
     }
     std::vector<int> onEdge, others; // triangles on (a, b), and those of one of them only
     for (int v : { a, b })
@@ -1961,21 +1971,7 @@ int CollapseTowardsValenceSix(Remesh& remesh, const std::vector<char>& pinned,
     std::copy(m, m + 3, point(a));
     remesh.SourceTriangles[static_cast<size_t>(a)] = source;
     std::copy(weights, weights + 3, &remesh.SourceBarycentric[3 * static_cast<size_t>(a)]);
-    for (int t : onEdge)
-    {
-      alive[static_cast<size_t>(t)] = 0;
-    }
-    for (int t : around[static_cast<size_t>(b)])
-    {
-      if (alive[static_cast<size_t>(t)])
-      {
-        std::replace(remesh.Triangles[static_cast<size_t>(t)].begin(),
-          remesh.Triangles[static_cast<size_t>(t)].end(), b, a);
-        around[static_cast<size_t>(a)].push_back(t);
-      }
-    }
-    around[static_cast<size_t>(b)].clear();
-    gone[static_cast<size_t>(b)] = 1;
+    CollapseInto(remesh, around, alive, b, a);
     ++collapsed;
   }
   KeepLiveTriangles(remesh, alive);

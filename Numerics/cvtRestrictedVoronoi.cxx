@@ -83,6 +83,27 @@ constexpr double FeatureAngleDegrees = 60.0;
 /// ... when the lines they form span at least this fraction of the bounding-box diagonal and
 /// meet at few junctions (scanner noise and sliver triangles make small webs of sharp edges).
 constexpr double MinimumFeatureExtent = 0.15;
+
+/// The dual pass's pieces (one per cell and triangle) in triangle order: those of triangle t
+/// are [First[t], First[t + 1]), a few at most. Their sites side by side, for lookups far from
+/// the piece.
+struct PieceIndex
+{
+  std::vector<int> First;
+  std::vector<int> Site;
+  /// The piece of `site`'s cell in `triangle`, or -1.
+  int Of(int site, int triangle) const
+  {
+    for (int p = this->First[triangle]; p < this->First[triangle + 1]; ++p)
+    {
+      if (this->Site[p] == site)
+      {
+        return p;
+      }
+    }
+    return -1;
+  }
+};
 }
 
 struct RestrictedVoronoi::Internals
@@ -138,11 +159,11 @@ struct RestrictedVoronoi::Internals
   /// Appends the contact of `site`'s piece `polygon` of triangle t to `list`.
   void Contact(int t, int site, const Polygon& polygon, ContactList& list) const;
   /// The Euler characteristic of each cell part, and where sites would cut the parts that are
-  /// not disks. `pieces` are in triangle order (those of triangle t from firstPiece[t]); bit k
-  /// of firstHolder: the piece is the first of its cell to hold its triangle's corner k.
-  void FindNonDiskParts(const std::vector<const SiteContact*>& pieces,
-    const std::vector<int>& firstPiece, const std::vector<int>& vertexOfPiece,
-    const std::vector<std::uint8_t>& firstHolder, RestrictedDual& dual) const;
+  /// not disks. `pieces` are in triangle order (`index`); bit k of firstHolder: the piece is the
+  /// first of its cell to hold its triangle's corner k.
+  void FindNonDiskParts(const std::vector<const SiteContact*>& pieces, const PieceIndex& index,
+    const std::vector<int>& vertexOfPiece, const std::vector<std::uint8_t>& firstHolder,
+    RestrictedDual& dual) const;
 };
 
 //------------------------------------------------------------------------------
@@ -517,7 +538,7 @@ void RestrictedVoronoi::Internals::Contact(
 // triangle's border counts 1 - (its edge segments without their ends) - (its corners); an edge
 // segment counts 1 - (the edge's end points it holds); a point counts 1.
 void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const SiteContact*>& pieces,
-  const std::vector<int>& firstPiece, const std::vector<int>& vertexOfPiece,
+  const PieceIndex& index, const std::vector<int>& vertexOfPiece,
   const std::vector<std::uint8_t>& firstHolder, RestrictedDual& dual) const
 {
   const size_t vertexCount = dual.Sites.size();
@@ -560,26 +581,19 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
             continue;
           }
           bool sharedFirst = false; // the other piece holds it alike and comes first
-          for (int q = firstPiece[across]; q < firstPiece[across + 1]; ++q)
+          const int q = index.Of(c.Site, across);
+          const auto& other = this->Mesh.Triangles[across];
+          for (int j = 0; j < 3 && q >= 0; ++j)
           {
-            if (pieces[q]->Site != c.Site)
+            const int after = (j + 1) % 3;
+            const bool sameEdge = std::minmax(other[j], other[after]) ==
+              std::minmax(tri[k], tri[next]); // either way round
+            if (sameEdge && ((pieces[q]->EdgeMask >> j) & 1))
             {
-              continue;
+              const int otherEnds =
+                ((pieces[q]->CornerMask >> j) & 1) + ((pieces[q]->CornerMask >> after) & 1);
+              sharedFirst = otherEnds == ends && across < c.Triangle;
             }
-            const auto& other = this->Mesh.Triangles[across];
-            for (int j = 0; j < 3; ++j)
-            {
-              const int after = (j + 1) % 3;
-              const bool sameEdge = std::minmax(other[j], other[after]) ==
-                std::minmax(tri[k], tri[next]); // either way round
-              if (sameEdge && ((pieces[q]->EdgeMask >> j) & 1))
-              {
-                const int otherEnds =
-                  ((pieces[q]->CornerMask >> j) & 1) + ((pieces[q]->CornerMask >> after) & 1);
-                sharedFirst = otherEnds == ends && across < c.Triangle;
-              }
-            }
-            break;
           }
           if (!sharedFirst)
           {
@@ -1206,8 +1220,8 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   }
   d.Sweep(true, 0, d.BlockCount);
   dual = RestrictedDual();
-  // The pieces (one per cell and triangle), in block order, hence in triangle order: those of
-  // triangle t are [firstPiece[t], firstPiece[t + 1]), a few at most, searched for a cell's.
+  // The pieces (one per cell and triangle), in block order, hence in triangle order (indexed
+  // below by triangle and cell: PieceIndex).
   std::vector<const SiteContact*> pieces;
   std::vector<const std::array<double, 6>*> segmentsOf; // per piece: its border segments
   for (const ContactList& block : d.BlockContacts)
@@ -1237,33 +1251,22 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
     segmentsOf.swap(sortedSegments);
   }
   const int triangleCount = d.Mesh.NumberOfTriangles();
-  std::vector<int> firstPiece(triangleCount + 1, 0);
+  PieceIndex index;
+  index.First.assign(triangleCount + 1, 0);
   for (const SiteContact* c : pieces)
   {
-    ++firstPiece[c->Triangle + 1];
+    ++index.First[c->Triangle + 1];
   }
-  std::partial_sum(firstPiece.begin(), firstPiece.end(), firstPiece.begin());
-  // The pieces' sites side by side: looked up across edges and at points, far from the piece.
-  std::vector<int> siteOfPiece(pieces.size());
+  std::partial_sum(index.First.begin(), index.First.end(), index.First.begin());
+  index.Site.resize(pieces.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(pieces.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType p = begin; p < end; ++p)
       {
-        siteOfPiece[p] = pieces[p]->Site;
+        index.Site[p] = pieces[p]->Site;
       }
     });
-  const auto pieceOf = [&](int site, int triangle)
-  {
-    for (int p = firstPiece[triangle]; p < firstPiece[triangle + 1]; ++p)
-    {
-      if (siteOfPiece[p] == site)
-      {
-        return p;
-      }
-    }
-    return -1;
-  };
   // A restricted cell can have several connected parts (a thin plate: one on each side). Its
   // pieces are joined across the mesh edges they share; each part is a vertex of the dual
   // (the "multinerve"), so the remesh keeps the plate's two sides apart.
@@ -1286,7 +1289,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       {
         continue;
       }
-      const int found = pieceOf(siteOfPiece[p], across);
+      const int found = index.Of(index.Site[p], across);
       if (found >= 0)
       {
         parent[find(static_cast<int>(p))] = find(found);
@@ -1313,14 +1316,14 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         {
           holder = static_cast<int>(p);
         }
-        else if (siteOfPiece[holder] == siteOfPiece[p])
+        else if (index.Site[holder] == index.Site[p])
         {
           other = holder;
         }
         else
         {
           const auto found =
-            otherHolders.emplace(DirectedKey(siteOfPiece[p], point), static_cast<int>(p));
+            otherHolders.emplace(DirectedKey(index.Site[p], point), static_cast<int>(p));
           other = found.second ? -1 : found.first->second;
         }
         if (other >= 0)
@@ -1355,7 +1358,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       bool found = true;
       for (int k = 0; k < 3 && found; ++k)
       {
-        const int piece = pieceOf(t[k], t[3]);
+        const int piece = index.Of(t[k], t[3]);
         found = piece >= 0;
         triangle[k] = found ? vertexOfPiece[piece] : -1;
       }
@@ -1487,7 +1490,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         dual.BoundaryTriangles[i], &dual.BoundaryPoints[3 * i], &dual.BoundaryBarycentric[3 * i]);
     }
   }
-  d.FindNonDiskParts(pieces, firstPiece, vertexOfPiece, firstHolder, dual);
+  d.FindNonDiskParts(pieces, index, vertexOfPiece, firstHolder, dual);
   return true;
 }
 

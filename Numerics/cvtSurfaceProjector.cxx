@@ -41,11 +41,8 @@ public:
   /// Starts from triangle t (a guess: the search then only looks for nearer ones).
   void Start(int t)
   {
-    const auto& tri = this->Mesh.Triangles[static_cast<size_t>(t)];
-    ClosestPointOnTriangle(this->P, this->Mesh.Point(tri[0]), this->Mesh.Point(tri[1]),
-      this->Mesh.Point(tri[2]), this->Q, this->W);
-    this->Best2 = Distance2(this->Q, this->P);
-    this->Best = t;
+    this->Tested[this->TestedCount++] = t;
+    this->Test(t);
   }
 
   void Walk(const SizeClass& sizeClass)
@@ -77,17 +74,8 @@ public:
     {
       this->Tested[this->TestedCount++] = t;
     }
-    const auto& tri = this->Mesh.Triangles[static_cast<size_t>(t)];
-    double q[3], w[3];
-    ClosestPointOnTriangle(
-      this->P, this->Mesh.Point(tri[0]), this->Mesh.Point(tri[1]), this->Mesh.Point(tri[2]), q, w);
-    const double d2 = Distance2(q, this->P);
-    if (d2 < this->Best2)
+    if (this->Test(t))
     {
-      this->Best2 = d2;
-      this->Best = t;
-      std::copy(q, q + 3, this->Q);
-      std::copy(w, w + 3, this->W);
       this->UpdateBound();
     }
     return true;
@@ -99,6 +87,25 @@ public:
   double W[3] = { 0.0, 0.0, 0.0 };
 
 private:
+  /// Triangle t becomes the best if it is nearer than the best so far; whether it did.
+  bool Test(int t)
+  {
+    const auto& tri = this->Mesh.Triangles[static_cast<size_t>(t)];
+    double q[3], w[3];
+    ClosestPointOnTriangle(
+      this->P, this->Mesh.Point(tri[0]), this->Mesh.Point(tri[1]), this->Mesh.Point(tri[2]), q, w);
+    const double d2 = Distance2(q, this->P);
+    if (!(d2 < this->Best2))
+    {
+      return false;
+    }
+    this->Best2 = d2;
+    this->Best = t;
+    std::copy(q, q + 3, this->Q);
+    std::copy(w, w + 3, this->W);
+    return true;
+  }
+
   void UpdateBound()
   {
     const double bound = std::sqrt(this->Best2) + this->Class->Radius;
