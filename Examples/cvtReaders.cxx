@@ -341,6 +341,18 @@ vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options)
   {
     Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj .off");
   }
+  // VTK's OBJ reader takes a UTF-16 file for one line too long to read, ours for a bad header.
+  if (ext == "obj" || ext == "off")
+  {
+    std::ifstream in(options.Input, std::ios::binary);
+    unsigned char mark[2] = { 0, 0 };
+    in.read(reinterpret_cast<char*>(mark), 2);
+    if ((mark[0] == 0xFF && mark[1] == 0xFE) || (mark[0] == 0xFE && mark[1] == 0xFF))
+    {
+      Fail("cannot read --input '" + options.Input +
+        "': it is UTF-16 text; save it as UTF-8 or ASCII");
+    }
+  }
   vtkSmartPointer<vtkAlgorithm> reader = format->Open(options.Input);
   if (format->Probe)
   {

@@ -36,6 +36,8 @@ expect_error "not of 'cvt surface'" surface --invert
 expect_error "no such file" surface --input "$T/missing.vtp"
 : > "$T/mesh.xyz"
 expect_error "unknown type" surface --input "$T/mesh.xyz"
+printf '\xff\xfev\x00 \x000\x00' > "$T/utf16.obj"
+expect_error "UTF-16 text" surface --input "$T/utf16.obj"
 expect_error "option of 'cvt surface'" image --torus 1 0.4
 expect_error "mask leaves" surface --gi-resolution 4 4 --sites 100
 expect_error "between 0 and 1" image --gradient-tolerance 2
