@@ -8,7 +8,8 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
 # ParaView 5.11's development package (its bundled VTK 9.2) and the packages its exported
-# CMake configuration looks for, EGL for the headless OpenGL context, and the test tools.
+# CMake configuration looks for, EGL for the headless OpenGL context, and the test tools
+# (assimp-testmodels: public mesh files, BSD-licensed, for Testing/public-files.sh).
 packages=(
   build-essential cmake
   paraview-dev python3-paraview
@@ -21,7 +22,7 @@ packages=(
   libprotobuf-dev protobuf-compiler
   libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
   libeigen3-dev liblbfgspp-dev libnanoflann-dev
-  libgtest-dev googletest python3-matplotlib xvfb xauth xdotool
+  libgtest-dev googletest python3-matplotlib xvfb xauth xdotool assimp-testmodels
   libvtk9.1 libvtk9.1-qt libtbb-dev
 )
 missing=()
