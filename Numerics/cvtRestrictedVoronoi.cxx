@@ -1102,15 +1102,10 @@ bool RestrictedVoronoi::SetDensity(const std::vector<double>& density)
   {
     return this->Fail("set a mesh before its density");
   }
-  if (!density.empty() && density.size() != static_cast<size_t>(d.Mesh.NumberOfPoints()))
+  const std::string problem = CheckDensity(density, d.Mesh.NumberOfPoints());
+  if (!problem.empty())
   {
-    return this->Fail("the density has " + std::to_string(density.size()) +
-      " values for a mesh of " + std::to_string(d.Mesh.NumberOfPoints()) + " points");
-  }
-  if (!std::all_of(
-        density.begin(), density.end(), [](double v) { return std::isfinite(v) && v >= 0.0; }))
-  {
-    return this->Fail("the density must be finite and not negative at every point");
+    return this->Fail(problem);
   }
   d.Mesh.Density = density;
   d.ComputeTriangleMoments();

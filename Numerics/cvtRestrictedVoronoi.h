@@ -71,8 +71,9 @@ public:
 
   /// The surface (edge-manifold and consistently oriented: see RepairSurfaceMesh).
   bool SetMesh(const SurfaceMesh& mesh);
-  /// Replaces the mesh's density (one value >= 0 per point; empty: uniform) and keeps the rest
-  /// of what SetMesh found (edges, borders, feature lines): far quicker than SetMesh again.
+  /// Replaces the mesh's density (CheckDensity: a finite value >= 0 per point, not zero
+  /// everywhere; empty: uniform) and keeps the rest of what SetMesh found (edges, borders,
+  /// feature lines): far quicker than SetMesh again.
   bool SetDensity(const std::vector<double>& density);
   /// Sites as flat x, y, z; any number from 1 on, anywhere in space.
   bool SetSites(const std::vector<double>& sites);

@@ -93,17 +93,22 @@ std::string CheckSurfaceMesh(const SurfaceMesh& mesh)
              "units to rescale)";
     }
   }
-  if (mesh.Density.empty())
+  return CheckDensity(mesh.Density, mesh.NumberOfPoints());
+}
+
+std::string CheckDensity(const std::vector<double>& density, int numberOfPoints)
+{
+  if (density.empty())
   {
     return std::string();
   }
-  if (static_cast<int>(mesh.Density.size()) != mesh.NumberOfPoints())
+  if (static_cast<int>(density.size()) != numberOfPoints)
   {
-    return "the density array has " + std::to_string(mesh.Density.size()) + " values for " +
-      std::to_string(mesh.NumberOfPoints()) + " points";
+    return "the density array has " + std::to_string(density.size()) + " values for " +
+      std::to_string(numberOfPoints) + " points";
   }
   double largest = 0.0;
-  for (double d : mesh.Density)
+  for (double d : density)
   {
     if (!std::isfinite(d))
     {

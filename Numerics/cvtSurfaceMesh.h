@@ -59,6 +59,8 @@ CVTNUMERICS_EXPORT std::vector<int> SplitPinchedPoints(
 /// Checks coordinates and density: "" or what is wrong (NaN, infinite or beyond 1e30
 /// coordinates, NaN, infinite, negative or all-zero density, wrong density size).
 CVTNUMERICS_EXPORT std::string CheckSurfaceMesh(const SurfaceMesh& mesh);
+/// Checks a density for a mesh of `numberOfPoints` points likewise (empty: uniform, fine).
+CVTNUMERICS_EXPORT std::string CheckDensity(const std::vector<double>& density, int numberOfPoints);
 
 struct MeshTopology
 {

@@ -320,13 +320,16 @@ TEST(RestrictedVoronoi, SetDensityGivesTheSumsOfTheMeshWithThatDensity)
   ASSERT_TRUE(engine.SetDensity({}) && engine.ComputeCellSums(back));
   EXPECT_EQ(back.Energy, uniform.Energy);
   EXPECT_FALSE(engine.SetDensity(std::vector<double>(3, 1.0)));
-  EXPECT_NE(engine.GetLastError().find("3 values for a mesh of"), std::string::npos)
+  EXPECT_NE(engine.GetLastError().find("has 3 values for"), std::string::npos)
     << engine.GetLastError();
   density[7] = -1.0;
   EXPECT_FALSE(engine.SetDensity(density));
+  EXPECT_NE(engine.GetLastError().find("negative"), std::string::npos);
   density[7] = std::nan("");
   EXPECT_FALSE(engine.SetDensity(density));
-  EXPECT_NE(engine.GetLastError().find("not negative"), std::string::npos);
+  EXPECT_NE(engine.GetLastError().find("NaN"), std::string::npos);
+  EXPECT_FALSE(engine.SetDensity(std::vector<double>(density.size(), 0.0)));
+  EXPECT_NE(engine.GetLastError().find("zero everywhere"), std::string::npos);
   ASSERT_TRUE(engine.ComputeCellSums(back));
   EXPECT_EQ(back.Energy, uniform.Energy);
   cvt::RestrictedVoronoi empty;
