@@ -1,9 +1,9 @@
-"""pvpython test of the ParaView plugin (run under xvfb-run): loads the plugin, runs every
+"""pvpython test of the ParaView plugin (run under X: Testing/xvfb.sh): loads the plugin, runs every
 proxy with its default properties on bundled data, checks the outputs numerically, compares a
 screenshot with a baseline, and checks that bad input leaves an error and an empty output while
 the session keeps working.
 
-    xvfb-run -a pvpython TestParaViewPlugin.py PLUGIN DATA_DIR OUTPUT_DIR
+    Testing/xvfb.sh run STATE_DIR pvpython TestParaViewPlugin.py PLUGIN DATA_DIR OUTPUT_DIR
 Set CVT_UPDATE_BASELINES=1 to rewrite the baseline."""
 import os
 import sys
