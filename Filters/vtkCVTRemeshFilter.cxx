@@ -8,6 +8,7 @@
 #include "vtkCVTOutputHelpers.h"
 
 #include "vtkCellArray.h"
+#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -411,9 +412,15 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
 /// The cleaned, triangulated input (coincident points merged, polygons and strips split).
 vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
 {
-  vtkNew<vtkStaticCleanPolyData> merge; // threaded
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
-  merge->SetMergingArray(nullptr); // 9.2's constructor allocates a name it never frees
+  vtkNew<vtkStaticCleanPolyData> merge; // threaded, and the same whatever the threads' timing
+  merge->SetMergingArray(nullptr);      // 9.2's constructor allocates a name it never frees
+#else
+  // VTK 9.1's threaded merge keeps, of points within the tolerance, whichever its threads reach
+  // first (with TBB, Debian's VTK 9.1: assimp's regr01.obj gave three different meshes in six
+  // runs, and so different remeshes); this one is serial (6 times slower: 3.3 s on 832,000
+  // triangles).
+  vtkNew<vtkCleanPolyData> merge;
 #endif
   merge->SetInputData(input);
   // Points a billionth of the diagonal apart are one: a parametric surface's seam differs by
