@@ -50,6 +50,14 @@ constexpr int TopologyRoundIterations[] = { 3, 10 };
 /// came after up to 4 such rounds (boeing, spider); holes and handles far smaller than the
 /// cells (ChineseDragon's missing triangles, femur's tunnels) never gain and cost all 16 rounds.
 constexpr int MaximumRoundsWithoutGain = 5;
+/// Sites added for the topology, per site asked for (and at least the minimum), beyond which a
+/// remesh that still misses the input's topology is not taken: the closest with fewer added is.
+/// Thin inputs need many (a fence of 40 planks 2% of their height thick, at 100 sites: 3634 to
+/// reach its topology), but a building of 59 parts whose walls are 0.4% of the diagonal thick
+/// (assimp's regr01.obj, 1000 sites) never got there: 21703 added, 41253 vertices, corners of 0
+/// degrees; bounded, 2480 vertices (cells cut by its walls) with corners of 25.9 degrees or more.
+constexpr int MissedTopologyAddedSitesPerSite = 2;
+constexpr int MissedTopologyAddedSitesMinimum = 2000;
 /// Lloyd iterations that settle the added sites under their cells' sizes: 15, 20 and 30 give
 /// about the same valences on the CGAL meshes; at 1000 sites 20 cost 0.06 to 0.18 s.
 constexpr int SettledIterations = 20;
@@ -232,9 +240,10 @@ bool SettleUnderCellSizes(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh
 /// closer, again from `sites` with the next count. A pass gives up after
 /// MaximumRoundsWithoutGain rounds without gain; thin parts alone get rounds while they become
 /// fewer. Returns the remesh with the input's topology and fewest thin parts, else the first of
-/// the closest topology, in `best`; false (and `error`) when the engine fails. While the remesh
-/// has other boundary loops than the input, the rounds also add sites that keep holes apart and
-/// open (SplitPointsOnLoops).
+/// the closest topology (with at most MissedTopologyAddedSitesPerSite sites added per site where
+/// one is), in `best`; false (and `error`) when the engine fails. While the remesh has other
+/// boundary loops than the input, the rounds also add sites that keep holes apart and open
+/// (SplitPointsOnLoops).
 bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& target,
   const cvt::MeshTopology& input, const std::vector<double>& sites,
   const std::function<bool()>& aborted, TopologyRefinement& best, std::string& error)
@@ -242,6 +251,11 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
   const cvt::SurfaceMesh& mesh = target.Surface;
   cvt::RestrictedProblem problem(engine);
   std::vector<double> firstSplitPoints;
+  // The closest remesh with at most `bound` sites added, taken when the rounds end without the
+  // input's topology after adding more.
+  const size_t bound = std::max<size_t>(
+    MissedTopologyAddedSitesMinimum, MissedTopologyAddedSitesPerSite * (sites.size() / 3));
+  TopologyRefinement bounded;
   // Rounds since the best remesh or the fewest thin parts so far last improved.
   int roundsWithoutGain = 0, fewestThinParts = std::numeric_limits<int>::max();
   // The remesh of the engine's current sites (`added` of them beyond `sites`) if closer to the
@@ -265,10 +279,17 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     }
     bool gain = dual.ThinParts < fewestThinParts;
     fewestThinParts = std::min(fewestThinParts, dual.ThinParts);
+    const int mismatch = TopologyMismatch(topology, input);
+    if (added <= bound && mismatch < bounded.Mismatch)
+    {
+      bounded.Dual = dual;
+      bounded.Mismatch = mismatch;
+      bounded.AddedSites = static_cast<int>(added);
+      bounded.Sites = current;
+    }
     // With the input's topology reached, only fewer thin parts can do better.
     if (best.Mismatch != 0 || dual.ThinParts < best.Dual.ThinParts)
     {
-      const int mismatch = TopologyMismatch(topology, input);
       if (mismatch < best.Mismatch || (mismatch == 0 && dual.ThinParts < best.Dual.ThinParts))
       {
         best.Dual = std::move(dual);
@@ -328,6 +349,13 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
         return false;
       }
     }
+  }
+  if (best.Mismatch != 0 && static_cast<size_t>(best.AddedSites) > bound &&
+    bounded.Mismatch != std::numeric_limits<int>::max())
+  {
+    const int rounds = best.Rounds;
+    best = std::move(bounded);
+    best.Rounds = rounds;
   }
   if (best.Mismatch == 0 && best.AddedSites > 0 && !aborted() &&
     !SettleUnderCellSizes(engine, mesh, input, best, error))

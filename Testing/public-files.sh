@@ -74,6 +74,20 @@ while IFS= read -r file; do
     echo "  the remesh's topology differs from the input's ($input)"; bad=1
   fi
 done < <(find . -type f \( -iname '*.obj' -o -iname '*.ply' -o -iname '*.stl' -o -iname '*.off' \) | sort)
+# The building at 1000 sites: its walls keep the topology out of reach however many sites the
+# rounds add; the remesh stays near the size asked for, with corners of 25 degrees or more
+# (before the bound on added sites: 21703 added, 41253 vertices, corners of 0 degrees).
+if [ -f OBJ/regr01.obj ]; then
+  timeout 300 env -u DISPLAY "$CVT" surface --input OBJ/regr01.obj --sites 1000 --report \
+    --output "$T/regr01-1000" > "$T/regr01-1000.log" 2>&1
+  added=$(sed -n 's/^  sites added for topology *\([0-9]*\).*/\1/p' "$T/regr01-1000.log")
+  smallest=$(sed -n 's/^  smallest \/ largest angle *\([0-9.]*\).*/\1/p' "$T/regr01-1000.log")
+  echo "OBJ/regr01.obj at 1000 sites: ${added:-?} sites added for topology, smallest angle ${smallest:-?}"
+  if [ -z "$added" ] || [ "$added" -gt 2000 ] || [ -z "$smallest" ] ||
+    awk -v a="$smallest" 'BEGIN { exit !(a < 25) }'; then
+    echo "  more than 2000 sites added, or a corner under 25 degrees"; tail -5 "$T/regr01-1000.log"; bad=1
+  fi
+fi
 # The same file gives the same remesh every time: VTK 9.1's threaded point merge (TBB) kept
 # whichever of the building's near-coincident points its threads reached first.
 if [ -f "$T/OBJ_regr01.obj/sites.csv" ]; then
