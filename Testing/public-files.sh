@@ -35,6 +35,9 @@ too_thin=(OBJ/regr01.obj)
 [ -n "${CVT_VTK_9_1:-}" ] && too_thin+=(OBJ/concave_polygon.obj OBJ/space_in_material_name.obj)
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
+remesh() { # remesh FILE SITES OUTPUT_DIR: as a user would, the report on stdout
+  timeout 300 env -u DISPLAY "$CVT" surface --input "$1" --sites "$2" --report --output "$3"
+}
 bad=0
 remeshed=0
 refusals=0
@@ -42,8 +45,7 @@ cd "$MODELS" || exit 1
 while IFS= read -r file; do
   file=${file#./}
   out="$T/$(echo "$file" | tr '/ ' '__')"
-  timeout 300 env -u DISPLAY "$CVT" surface --input "$file" --sites "$SITES" --report \
-    --output "$out" > "$out.log" 2> "$out.err"
+  remesh "$file" "$SITES" "$out" > "$out.log" 2> "$out.err"
   rc=$?
   expect=remesh
   [[ " ${refused[*]} " == *" $file "* ]] && expect=refuse
@@ -78,8 +80,7 @@ done < <(find . -type f \( -iname '*.obj' -o -iname '*.ply' -o -iname '*.stl' -o
 # rounds add; the remesh stays near the size asked for, with corners of 25 degrees or more
 # (before the bound on added sites: 21703 added, 41253 vertices, corners of 0 degrees).
 if [ -f OBJ/regr01.obj ]; then
-  timeout 300 env -u DISPLAY "$CVT" surface --input OBJ/regr01.obj --sites 1000 --report \
-    --output "$T/regr01-1000" > "$T/regr01-1000.log" 2>&1
+  remesh OBJ/regr01.obj 1000 "$T/regr01-1000" > "$T/regr01-1000.log" 2>&1
   added=$(sed -n 's/^  sites added for topology *\([0-9]*\).*/\1/p' "$T/regr01-1000.log")
   smallest=$(sed -n 's/^  smallest \/ largest angle *\([0-9.]*\).*/\1/p' "$T/regr01-1000.log")
   echo "OBJ/regr01.obj at 1000 sites: ${added:-?} sites added for topology, smallest angle ${smallest:-?}"
@@ -92,8 +93,7 @@ fi
 # whichever of the building's near-coincident points its threads reached first.
 if [ -f "$T/OBJ_regr01.obj/sites.csv" ]; then
   for run in 2 3; do
-    timeout 300 env -u DISPLAY "$CVT" surface --input OBJ/regr01.obj --sites "$SITES" --report \
-      --output "$T/regr01-run$run" > /dev/null 2>&1
+    remesh OBJ/regr01.obj "$SITES" "$T/regr01-run$run" > /dev/null 2>&1
     if ! cmp -s "$T/OBJ_regr01.obj/sites.csv" "$T/regr01-run$run/sites.csv" ||
       ! cmp -s "$T/OBJ_regr01.obj/remesh.vtp" "$T/regr01-run$run/remesh.vtp"; then
       echo "OBJ/regr01.obj: run $run gave other sites or another remesh than the first"; bad=1
