@@ -127,8 +127,9 @@ vtkSmartPointer<vtkPolyData> Sphere(double radius = 1.0, double x = 0.0)
   return output;
 }
 
-/// A unit sphere with a smooth spike 0.4 high at its north pole (within 0.25 radians of it).
-vtkSmartPointer<vtkPolyData> SphereWithSpike()
+/// A unit sphere with smooth spikes 0.4 high about the given directions (within 0.25 radians of
+/// them; unit vectors or about).
+vtkSmartPointer<vtkPolyData> SphereWithSpikes(const std::vector<std::array<double, 3>>& directions)
 {
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(96);
@@ -141,11 +142,24 @@ vtkSmartPointer<vtkPolyData> SphereWithSpike()
     double x[3];
     output->GetPoint(p, x);
     vtkMath::Normalize(x);
-    const double fromPole = std::max(0.0, 1.0 - std::acos(std::clamp(x[2], -1.0, 1.0)) / 0.25);
-    vtkMath::MultiplyScalar(x, 1.0 + 0.4 * fromPole * fromPole);
+    double scale = 1.0;
+    for (std::array<double, 3> direction : directions)
+    {
+      vtkMath::Normalize(direction.data());
+      const double cosine = std::clamp(vtkMath::Dot(x, direction.data()), -1.0, 1.0);
+      const double fromTip = std::max(0.0, 1.0 - std::acos(cosine) / 0.25);
+      scale += 0.4 * fromTip * fromTip;
+    }
+    vtkMath::MultiplyScalar(x, scale);
     output->GetPoints()->SetPoint(p, x);
   }
   return output;
+}
+
+/// A unit sphere with a smooth spike 0.4 high at its north pole.
+vtkSmartPointer<vtkPolyData> SphereWithSpike()
+{
+  return SphereWithSpikes({ { 0.0, 0.0, 1.0 } });
 }
 
 /// A unit sphere with four round holes (about the +x, -x, +y and +z axes, 0.37 across): four
@@ -400,6 +414,29 @@ TEST(RemeshFilter, InputPointsFarFromTheRemeshGetSitesOfTheirOwn)
   const double farthest = FarthestInputPoint(spike, run.Remesh());
   EXPECT_LT(farthest, 0.013);
   std::cout << "[ measured ] spike at 200 sites: " << Field(sites, "FarPointSites")
+            << " sites at far input points; the input lies within " << 100.0 * farthest
+            << "% of the diagonal of the remesh\n";
+}
+
+TEST(RemeshFilter, SitesAtFarInputPointsAreSettledAmongTheirNeighbours)
+{
+  // At 150 sites on a sphere with six spikes, the cells of sites added at the far tip points
+  // are caps bordered by one or two others: no dual triangle, no vertex, and the input's tips
+  // stay 1.30% of the diagonal from the remesh. Settled among their neighbours by a few Lloyd
+  // iterations, they get vertices near the tips: 0.83%.
+  vtkSmartPointer<vtkPolyData> spikes =
+    SphereWithSpikes({ { 0.62, -0.78, 0.13 }, { -0.75, -0.6, -0.28 }, { -0.91, -0.1, -0.39 },
+      { 0.99, 0.07, -0.11 }, { -0.22, -0.52, -0.82 }, { -0.59, 0.72, -0.36 } });
+  RemeshRun run(spikes, 150, 100);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 1, 0, 0);
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_EQ(sites->GetNumberOfPoints(), 150);
+  EXPECT_GE(Field(sites, "FarPointSites"), 1);
+  EXPECT_GE(Field(run.Remesh(), "MinimumAngle"), 25.0);
+  const double farthest = FarthestInputPoint(spikes, run.Remesh());
+  EXPECT_LT(farthest, 0.01);
+  std::cout << "[ measured ] six spikes at 150 sites: " << Field(sites, "FarPointSites")
             << " sites at far input points; the input lies within " << 100.0 * farthest
             << "% of the diagonal of the remesh\n";
 }
