@@ -447,8 +447,10 @@ struct FidelityCandidate
 /// sites the two-way Hausdorff distance (mesh_energy.py's, % of the diagonal) goes homer 1.47 ->
 /// 1.03, lion 1.35 -> 1.00, 3torus 1.09 -> 0.92, bull 1.06 -> 0.90, armadillo 1.01 -> 0.87 (with
 /// the sites at the points alone, as before); a round costs up to four remeshes instead of one or
-/// two. The CVT's own sites stay as they are; the remesh has a vertex more each.
-bool RefineForFidelity(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& target,
+/// two; their remeshes ask the input mostly what the one before asked, so it remembers the
+/// answers meanwhile (mpi at 1000 sites: 1.53 -> 1.37 s end to end, oblong 1.96 -> 1.50 s). The
+/// CVT's own sites stay as they are; the remesh has a vertex more each.
+bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
   const cvt::MeshTopology& input, const std::function<bool()>& aborted, TopologyRefinement& best,
   std::string& error)
 {
@@ -482,6 +484,13 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     candidate.Fidelity = cvt::MeasureFidelity(candidate.Remesh, target, FarInputShare, budget);
     return true;
   };
+  // Forgets the answers however the rounds end.
+  struct Remembering
+  {
+    cvt::SurfaceProjector& Projector;
+    ~Remembering() { this->Projector.SetRememberAnswers(false); }
+  } remembering{ target.Projector };
+  target.Projector.SetRememberAnswers(!current.Fidelity.FarPoints.empty());
   for (int round = 0; round < FidelityRounds && !current.Fidelity.FarPoints.empty() &&
        static_cast<size_t>(best.FarPointSites) < budget && !aborted();
        ++round)

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <map>
+#include <mutex>
 
 #include "cvtGeometry.h"
 #include "cvtPointCloud.h"
@@ -120,11 +123,93 @@ private:
   int TestedCount = 0;
   double Bound2 = std::numeric_limits<double>::infinity();
 };
+
+/// Answers of earlier queries (SurfaceProjector::SetRememberAnswers): a direct-mapped table, each
+/// query's slot chosen by its hash and overwritten by the next query of that slot, so nothing is
+/// allocated per answer and a lookup is one memory access; a lock per group of slots for
+/// queries in parallel. The table is zeroed by the system as it is touched (calloc), and a slot
+/// holds its query's guess plus 2, so a zero slot is empty.
+class AnswerCache
+{
+public:
+  AnswerCache()
+    : Slots(static_cast<Slot*>(std::calloc(SlotCount, sizeof(Slot))))
+  {
+  }
+  ~AnswerCache() { std::free(this->Slots); }
+  AnswerCache(const AnswerCache&) = delete;
+  AnswerCache& operator=(const AnswerCache&) = delete;
+
+  /// Whether `p` with `guess` was asked and its answer is still here; the answer if so.
+  bool Find(const double* p, int guess, int& triangle, double q[3], double w[3])
+  {
+    if (!this->Slots)
+    {
+      return false;
+    }
+    const size_t index = Index(p, guess);
+    std::lock_guard<std::mutex> lock(this->Locks[index % LockCount]);
+    const Slot& slot = this->Slots[index];
+    if (slot.Guess != guess + 2 || std::memcmp(slot.P, p, sizeof(slot.P)) != 0)
+    {
+      return false;
+    }
+    triangle = slot.Triangle;
+    std::copy(slot.Q, slot.Q + 3, q);
+    std::copy(slot.W, slot.W + 3, w);
+    return true;
+  }
+
+  void Add(const double* p, int guess, int triangle, const double q[3], const double w[3])
+  {
+    if (!this->Slots)
+    {
+      return;
+    }
+    const size_t index = Index(p, guess);
+    std::lock_guard<std::mutex> lock(this->Locks[index % LockCount]);
+    Slot& slot = this->Slots[index];
+    std::copy(p, p + 3, slot.P);
+    slot.Guess = guess + 2;
+    slot.Triangle = triangle;
+    std::copy(q, q + 3, slot.Q);
+    std::copy(w, w + 3, slot.W);
+  }
+
+private:
+  static constexpr size_t SlotCount = size_t(1) << 18; // 88 bytes each
+  static constexpr size_t LockCount = 64;
+  struct Slot
+  {
+    double P[3];
+    int Guess; // + 2: 0 when empty
+    int Triangle;
+    double Q[3];
+    double W[3];
+  };
+
+  static size_t Index(const double* p, int guess)
+  {
+    std::uint64_t bits[3];
+    std::memcpy(bits, p, sizeof(bits));
+    std::uint64_t h = static_cast<std::uint64_t>(guess + 2) * 0x9E3779B97F4A7C15ull;
+    for (std::uint64_t b : bits)
+    {
+      h = (h ^ b) * 0x100000001B3ull;
+      h ^= h >> 29;
+    }
+    return static_cast<size_t>(h & (SlotCount - 1));
+  }
+
+  Slot* Slots;
+  std::mutex Locks[LockCount];
+};
 } // namespace
 
 struct SurfaceProjector::Internals
 {
   std::vector<std::unique_ptr<SizeClass>> Classes; // the most triangles first
+  std::unique_ptr<AnswerCache> Cache;              // while remembering answers
 };
 
 SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
@@ -220,16 +305,41 @@ SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
 
 SurfaceProjector::~SurfaceProjector() = default;
 
+void SurfaceProjector::SetRememberAnswers(bool remember)
+{
+  this->Internal->Cache.reset(remember ? new AnswerCache : nullptr);
+}
+
 int SurfaceProjector::Nearest(const double* p, double q[3], double w[3], int guess) const
 {
+  if (guess < 0 || guess >= this->Mesh.NumberOfTriangles())
+  {
+    guess = -1;
+  }
+  AnswerCache* cache = this->Internal->Cache.get();
+  int triangle = -1;
+  double remembered[6];
+  if (cache && cache->Find(p, guess, triangle, remembered, remembered + 3))
+  {
+    if (triangle >= 0)
+    {
+      std::copy(remembered, remembered + 3, q);
+      std::copy(remembered + 3, remembered + 6, w);
+    }
+    return triangle;
+  }
   NearestTriangleSearch search(this->Mesh, p);
-  if (guess >= 0 && guess < this->Mesh.NumberOfTriangles())
+  if (guess >= 0)
   {
     search.Start(guess);
   }
   for (const auto& sizeClass : this->Internal->Classes)
   {
     search.Walk(*sizeClass);
+  }
+  if (cache)
+  {
+    cache->Add(p, guess, search.Best, search.Q, search.W);
   }
   if (search.Best >= 0)
   {

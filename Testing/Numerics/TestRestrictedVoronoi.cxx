@@ -24,6 +24,7 @@
 #include <numeric>
 #include <random>
 #include <set>
+#include <thread>
 #include <utility>
 
 namespace
@@ -1714,6 +1715,66 @@ TEST(SurfaceMesh, ProjectorFindsTheNearestPointExactly)
   const cvt::SurfaceMesh empty;
   double q[3], w[3];
   EXPECT_EQ(cvt::SurfaceProjector(empty).Nearest(above, q, w), -1);
+}
+
+TEST(SurfaceMesh, ProjectorThatRemembersAnswersGivesTheSameAnswers)
+{
+  // Queries asked again (with the same guess or another, from two threads at once) and more
+  // queries than it remembers: the same triangle, point and weights, to the bit, as a projector
+  // that computes every answer.
+  const cvt::SurfaceMesh mesh =
+    cvttest::TwoParts(cvttest::FlatSquare(1, -20.0, 20.0), cvttest::Sphere(2), 3.0);
+  const cvt::SurfaceProjector computing(mesh);
+  cvt::SurfaceProjector remembering(mesh);
+  remembering.SetRememberAnswers(true);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> across(-20.0, 20.0), height(-3.0, 3.0);
+  std::vector<std::array<double, 3>> points(300000);
+  for (auto& p : points)
+  {
+    p = { across(random), across(random) / 4.0, height(random) };
+  }
+  const auto same = [&](size_t begin, size_t end, int pass)
+  {
+    for (size_t i = begin; i < end; ++i)
+    {
+      const int guess = pass == 0 ? -1 : static_cast<int>(i) % mesh.NumberOfTriangles();
+      double q0[3], w0[3], q1[3], w1[3];
+      const int t0 = computing.Nearest(points[i].data(), q0, w0, guess);
+      const int t1 = remembering.Nearest(points[i].data(), q1, w1, guess);
+      if (t0 != t1 || !std::equal(q0, q0 + 3, q1) || !std::equal(w0, w0 + 3, w1))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  // Above the middle of the square's diagonal both of its triangles (the first two) are
+  // nearest: the guess wins.
+  const std::array<int, 2> pair{ 0, 1 };
+  const double aboveDiagonal[3] = { 0.0, 0.0, 0.5 };
+  std::array<int, 2> chosen;
+  for (int k : { 0, 1, 0, 1 })
+  {
+    double q0[3], w0[3], q1[3], w1[3];
+    chosen[k] = computing.Nearest(aboveDiagonal, q0, w0, pair[k]);
+    EXPECT_EQ(remembering.Nearest(aboveDiagonal, q1, w1, pair[k]), chosen[k]);
+    EXPECT_TRUE(std::equal(w0, w0 + 3, w1));
+  }
+  EXPECT_EQ(chosen, pair);
+  // The first 1000 points, asked and asked again; then all of them, twice, split between two
+  // threads (the last pass asking again what the one before asked).
+  EXPECT_TRUE(same(0, 1000, 0));
+  EXPECT_TRUE(same(0, 1000, 0));
+  EXPECT_TRUE(same(0, 1000, 1));
+  for (int pass : { 1, 1 })
+  {
+    bool firstHalf = false;
+    std::thread other([&]() { firstHalf = same(0, points.size() / 2, pass); });
+    const bool secondHalf = same(points.size() / 2, points.size(), pass);
+    other.join();
+    EXPECT_TRUE(firstHalf && secondHalf);
+  }
 }
 
 TEST(SurfaceMesh, CoveringPointsLieNearEveryPointOfTheSurface)
