@@ -461,7 +461,8 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
   FidelityCandidate current;
   current.Mismatch = best.Mismatch;
   current.Fidelity = cvt::MeasureFidelity(best.Remesh, target, FarInputShare, budget);
-  const auto tryAdding = [&](size_t count, bool settle, FidelityCandidate& candidate)
+  // The candidate's sites and their dual (the engine's work, one candidate at a time).
+  const auto addSites = [&](size_t count, bool settle, FidelityCandidate& candidate)
   {
     const std::vector<double>& far = current.Fidelity.FarPoints;
     candidate.Sites = best.Sites;
@@ -479,10 +480,15 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
       error = "the restricted Delaunay triangulation failed: " + engine.GetLastError();
       return false;
     }
+    return true;
+  };
+  // Its remesh and how far that lies from the input (the most of a candidate's cost, run for
+  // two candidates at once: the shaping of one is serial).
+  const auto shape = [&](FidelityCandidate& candidate)
+  {
     candidate.Remesh = ShapedRemesh(candidate.Dual, target, input, candidate.Topology);
     candidate.Mismatch = TopologyMismatch(candidate.Topology, input);
     candidate.Fidelity = cvt::MeasureFidelity(candidate.Remesh, target, FarInputShare, budget);
-    return true;
   };
   // Forgets the answers however the rounds end.
   struct Remembering
@@ -501,18 +507,31 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
     bool found = false;
     for (size_t count : { all, all / 2 })
     {
-      for (bool settle : { false, true })
+      if (count == 0 || (found && closest.Fidelity.FarPoints.empty()))
       {
+        break; // within FarInputShare both ways: no need to look further
+      }
+      std::array<FidelityCandidate, 2> pair; // at the points, settled
+      if (!addSites(count, false, pair[0]) || !addSites(count, true, pair[1]))
+      {
+        return false;
+      }
+      vtkSMPTools::For(0, 2, 1,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            shape(pair[static_cast<size_t>(i)]);
+          }
+        });
+      for (FidelityCandidate& candidate : pair)
+      {
+        // The settled sites are not looked at when those at the points are within FarInputShare.
         if (found && closest.Fidelity.FarPoints.empty())
         {
-          break; // within FarInputShare both ways: no need to look further
+          break;
         }
-        FidelityCandidate candidate;
-        if (count > 0 && !tryAdding(count, settle, candidate))
-        {
-          return false;
-        }
-        if (count > 0 && candidate.CloserThan(current) && (!found || candidate.CloserThan(closest)))
+        if (candidate.CloserThan(current) && (!found || candidate.CloserThan(closest)))
         {
           closest = std::move(candidate);
           found = true;
