@@ -186,6 +186,9 @@ int RunRemesh(const Options& options)
               << " %)\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
               << Field(remesh, "MaximumAngle") << " degrees\n"
+              << "  distance input -> remesh    " << 100.0 * Field(remesh, "InputToRemeshDistance")
+              << " %, remesh -> input " << 100.0 * Field(remesh, "RemeshToInputDistance")
+              << " % of the diagonal (at points 0.8% of it apart)\n"
               << "  seconds: read " << readSeconds << ", prepare " << Field(sites, "PrepareSeconds")
               << ", optimise " << Field(sites, "OptimizeSeconds") << ", remesh "
               << Field(sites, "RemeshSeconds") << " (CVT filter " << cvtSeconds << "), write "
@@ -274,7 +277,11 @@ int RunSurface(const Options& options)
                 << "  remesh made as              the restricted Delaunay triangulation of the "
                    "sites on the mesh ("
                 << Field(exact->GetSitesOutput(), "AddedSites")
-                << " sites added for topology and fidelity)\n";
+                << " sites added for topology and fidelity)\n"
+                << "  distance input -> remesh    "
+                << 100.0 * Field(remesh, "InputToRemeshDistance") << " %, remesh -> input "
+                << 100.0 * Field(remesh, "RemeshToInputDistance")
+                << " % of the diagonal (at points 0.8% of it apart)\n";
     }
     std::cout << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles\n"

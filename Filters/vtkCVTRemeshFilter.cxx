@@ -180,11 +180,12 @@ struct TopologyRefinement
   cvt::Remesh Remesh;         // built from Dual at the end
   cvt::MeshTopology Topology; // the remesh's
   int Mismatch = std::numeric_limits<int>::max(); // TopologyMismatch against the input's
-  int AddedSites = 0;        // for the topology and for fidelity (RefineForFidelity)
-  int FarPointSites = 0;     // of AddedSites, those at input points far from the remesh
-  int Rounds = 0;            // of added sites, all passes
-  std::vector<double> Sites; // of Dual
-  bool Settled = false;      // by SettleUnderCellSizes
+  cvt::RemeshFidelity Fidelity; // of Remesh, once RefineForFidelity has measured it
+  int AddedSites = 0;           // for the topology and for fidelity (RefineForFidelity)
+  int FarPointSites = 0;        // of AddedSites, those at input points far from the remesh
+  int Rounds = 0;               // of added sites, all passes
+  std::vector<double> Sites;    // of Dual
+  bool Settled = false;         // by SettleUnderCellSizes
 };
 
 /// The remesh of `dual` shaped against the input `target` (BuildRemesh), with the input's holes
@@ -552,6 +553,7 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
     current.Fidelity = std::move(closest.Fidelity);
     current.Mismatch = closest.Mismatch;
   }
+  best.Fidelity = std::move(current.Fidelity);
   return true;
 }
 
@@ -972,6 +974,12 @@ bool vtkCVTRemeshFilter::Compute(
   cvtvtk::AddFieldValue(fields, "EngineRanks", ranks); // ranks sharing the cell sums
 
   FillRemesh(remeshOut, remesh, mesh, labelsOut->GetPointData(), remeshTopology, inputTopology);
+  // How far input and remesh lie apart, as the fidelity rounds measured it (shares of the input's
+  // bounding-box diagonal, at points 0.8% of it apart on each).
+  cvtvtk::AddFieldValue(
+    remeshOut->GetFieldData(), "InputToRemeshDistance", best.Fidelity.InputToRemesh);
+  cvtvtk::AddFieldValue(
+    remeshOut->GetFieldData(), "RemeshToInputDistance", best.Fidelity.RemeshToInput);
   if (best.Mismatch != 0)
   {
     vtkWarningMacro("The remesh's topology differs from the input's ("

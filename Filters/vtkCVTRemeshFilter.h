@@ -29,7 +29,9 @@
  *    (sites whose cell meets the border are pinned to it), oriented like the input, the input's
  *    point arrays interpolated onto it (but its normals), edges collapsed where that brings
  *    valences closer to 6 (CollapseForValence; off, a vertex per site); field data with
- *    valence and angle measures and topology;
+ *    valence and angle measures, topology, and how far input and remesh lie from each other
+ *    (InputToRemeshDistance, RemeshToInputDistance: shares of the input's bounding-box
+ *    diagonal, measured at points 0.8% of it apart on each);
  * 3. history: vtkTable (iteration, evaluations, energy, gradient_norm, seconds).
  * Bad input gives a clear error, empty outputs and RequestData returning 0.
  */

@@ -202,23 +202,29 @@ vtkSmartPointer<vtkPolyData> SphereWithHoles()
   return output;
 }
 
-/// The distance from the input's farthest point to the remesh's triangles, over the input's
-/// bounding-box diagonal: brute force with a cell locator, independent of the filter's measure.
-double FarthestInputPoint(vtkPolyData* input, vtkPolyData* remesh)
+/// How far the farthest point of `from` lies from the cells of `to`.
+double FarthestPoint(vtkPolyData* from, vtkPolyData* to)
 {
   vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(remesh);
+  locator->SetDataSet(to);
   locator->BuildLocator();
   double farthest = 0.0;
-  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  for (vtkIdType p = 0; p < from->GetNumberOfPoints(); ++p)
   {
     double nearest[3], distance2 = 0.0;
     vtkIdType cell = -1;
     int subId = 0;
-    locator->FindClosestPoint(input->GetPoint(p), nearest, cell, subId, distance2);
+    locator->FindClosestPoint(from->GetPoint(p), nearest, cell, subId, distance2);
     farthest = std::max(farthest, std::sqrt(distance2));
   }
-  return farthest / input->GetLength();
+  return farthest;
+}
+
+/// The distance from the input's farthest point to the remesh's triangles, over the input's
+/// bounding-box diagonal: brute force with a cell locator, independent of the filter's measure.
+double FarthestInputPoint(vtkPolyData* input, vtkPolyData* remesh)
+{
+  return FarthestPoint(input, remesh) / input->GetLength();
 }
 
 /// A torus of tube radius `tube` about the z axis (ring radius 1), `around` x `along` quads
@@ -436,6 +442,25 @@ TEST(RemeshFilter, SitesAtFarInputPointsAreSettledAmongTheirNeighbours)
   EXPECT_GE(Field(run.Remesh(), "MinimumAngle"), 25.0);
   const double farthest = FarthestInputPoint(spikes, run.Remesh());
   EXPECT_LT(farthest, 0.01);
+  // The remesh's own measure of both ways (at points 0.8% of the diagonal apart) against brute
+  // force at the points of each triangle's quarters (two linear subdivisions).
+  const auto dense = [](vtkPolyData* mesh)
+  {
+    vtkNew<vtkLinearSubdivisionFilter> subdivide;
+    subdivide->SetInputData(mesh);
+    subdivide->SetNumberOfSubdivisions(2);
+    subdivide->Update();
+    return vtkSmartPointer<vtkPolyData>(subdivide->GetOutput());
+  };
+  const double diagonal = spikes->GetLength();
+  const double inputToRemesh = FarthestPoint(dense(spikes), run.Remesh()) / diagonal;
+  const double remeshToInput = FarthestPoint(dense(run.Remesh()), spikes) / diagonal;
+  EXPECT_NEAR(Field(run.Remesh(), "InputToRemeshDistance"), inputToRemesh, 0.001);
+  EXPECT_NEAR(Field(run.Remesh(), "RemeshToInputDistance"), remeshToInput, 0.001);
+  std::cout << "[ measured ] both ways, the filter's measure "
+            << 100.0 * Field(run.Remesh(), "InputToRemeshDistance") << "% and "
+            << 100.0 * Field(run.Remesh(), "RemeshToInputDistance") << "%, at quarter triangles "
+            << 100.0 * inputToRemesh << "% and " << 100.0 * remeshToInput << "%\n";
   std::cout << "[ measured ] six spikes at 150 sites: " << Field(sites, "FarPointSites")
             << " sites at far input points; the input lies within " << 100.0 * farthest
             << "% of the diagonal of the remesh\n";
