@@ -105,6 +105,17 @@ std::string TopologyText(vtkDataObject* data, const std::string& prefix)
   return text.str();
 }
 
+/// The report's line of how far input and remesh lie from each other (vtkCVTRemeshFilter's
+/// remesh field data).
+std::string DistanceText(vtkDataObject* remesh)
+{
+  std::ostringstream text;
+  text << "  distance input -> remesh    " << 100.0 * Field(remesh, "InputToRemeshDistance")
+       << " %, remesh -> input " << 100.0 * Field(remesh, "RemeshToInputDistance")
+       << " % of the diagonal (at points 0.8% of it apart)\n";
+  return text.str();
+}
+
 /// cvt surface --input MESH on the CPU engine: restricted Voronoi cells on the mesh itself.
 int RunRemesh(const Options& options)
 {
@@ -186,13 +197,10 @@ int RunRemesh(const Options& options)
               << " %)\n"
               << "  smallest / largest angle    " << Field(remesh, "MinimumAngle") << " / "
               << Field(remesh, "MaximumAngle") << " degrees\n"
-              << "  distance input -> remesh    " << 100.0 * Field(remesh, "InputToRemeshDistance")
-              << " %, remesh -> input " << 100.0 * Field(remesh, "RemeshToInputDistance")
-              << " % of the diagonal (at points 0.8% of it apart)\n"
-              << "  seconds: read " << readSeconds << ", prepare " << Field(sites, "PrepareSeconds")
-              << ", optimise " << Field(sites, "OptimizeSeconds") << ", remesh "
-              << Field(sites, "RemeshSeconds") << " (CVT filter " << cvtSeconds << "), write "
-              << writeSeconds << "\n";
+              << DistanceText(remesh) << "  seconds: read " << readSeconds << ", prepare "
+              << Field(sites, "PrepareSeconds") << ", optimise " << Field(sites, "OptimizeSeconds")
+              << ", remesh " << Field(sites, "RemeshSeconds") << " (CVT filter " << cvtSeconds
+              << "), write " << writeSeconds << "\n";
     (void)out;
   }
   PrintSummary(options, sites, "", "sites.vtp sites.csv labels.vtp remesh.vtp history.csv cvt.png",
@@ -278,10 +286,7 @@ int RunSurface(const Options& options)
                    "sites on the mesh ("
                 << Field(exact->GetSitesOutput(), "AddedSites")
                 << " sites added for topology and fidelity)\n"
-                << "  distance input -> remesh    "
-                << 100.0 * Field(remesh, "InputToRemeshDistance") << " %, remesh -> input "
-                << 100.0 * Field(remesh, "RemeshToInputDistance")
-                << " % of the diagonal (at points 0.8% of it apart)\n";
+                << DistanceText(remesh);
     }
     std::cout << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles\n"
