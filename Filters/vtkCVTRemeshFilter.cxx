@@ -484,12 +484,14 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
     return true;
   };
   // Its remesh and how far that lies from the input (the most of a candidate's cost, run for
-  // two candidates at once: the shaping of one is serial).
+  // two candidates at once: the shaping of one is serial), measured again only where it differs
+  // from the remesh it adds sites to.
   const auto shape = [&](FidelityCandidate& candidate)
   {
     candidate.Remesh = ShapedRemesh(candidate.Dual, target, input, candidate.Topology);
     candidate.Mismatch = TopologyMismatch(candidate.Topology, input);
-    candidate.Fidelity = cvt::MeasureFidelity(candidate.Remesh, target, FarInputShare, budget);
+    candidate.Fidelity = cvt::MeasureFidelity(
+      candidate.Remesh, target, FarInputShare, budget, &best.Remesh, &current.Fidelity);
   };
   // Forgets the answers however the rounds end.
   struct Remembering

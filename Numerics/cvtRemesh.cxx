@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <unordered_map>
 #include <unordered_set>
@@ -2576,8 +2578,90 @@ int OpenCoveredHoles(
   return remesh.OpenedHoles;
 }
 
-RemeshFidelity MeasureFidelity(
-  const Remesh& remesh, const RemeshInput& input, double share, size_t maximumPoints)
+namespace
+{
+/// Coordinates as their bits: the same key means the same point, to the bit.
+template<size_t N>
+std::array<std::uint64_t, N> BitsOf(const double* coordinates)
+{
+  std::array<std::uint64_t, N> bits;
+  std::memcpy(bits.data(), coordinates, N * sizeof(double));
+  return bits;
+}
+using PointBits = std::array<std::uint64_t, 3>;
+/// A remesh triangle as the bits of its corners' coordinates, in order: triangles with the same
+/// key are as far from any point.
+using TriangleCorners = std::array<std::uint64_t, 9>;
+
+TriangleCorners CornersOf(const Remesh& remesh, const std::array<int, 3>& triangle)
+{
+  TriangleCorners corners;
+  for (int k = 0; k < 3; ++k)
+  {
+    const PointBits bits = BitsOf<3>(&remesh.Points[3 * static_cast<size_t>(triangle[k])]);
+    std::copy(bits.begin(), bits.end(), corners.begin() + 3 * k);
+  }
+  return corners;
+}
+
+struct BitsHash
+{
+  template<size_t N>
+  size_t operator()(const std::array<std::uint64_t, N>& key) const
+  {
+    std::uint64_t h = 0xCBF29CE484222325ull;
+    for (std::uint64_t bits : key)
+    {
+      h = (h ^ bits) * 0x100000001B3ull;
+      h ^= h >> 29;
+    }
+    return static_cast<size_t>(h);
+  }
+};
+
+/// The triangles of `remesh` that `before` lacks, as a mesh of their own (`added`, and the index
+/// in `remesh` of each of its triangles), and where each triangle of `before` is in `remesh`
+/// (-1: not there).
+void CompareTriangles(const Remesh& remesh, const Remesh& before, std::vector<int>& keptAs,
+  SurfaceMesh& added, std::vector<int>& addedAs)
+{
+  std::unordered_map<TriangleCorners, int, BitsHash> here;
+  here.reserve(remesh.Triangles.size());
+  for (size_t t = 0; t < remesh.Triangles.size(); ++t)
+  {
+    here.emplace(CornersOf(remesh, remesh.Triangles[t]), static_cast<int>(t));
+  }
+  keptAs.assign(before.Triangles.size(), -1);
+  std::vector<char> kept(remesh.Triangles.size(), 0);
+  for (size_t t = 0; t < before.Triangles.size(); ++t)
+  {
+    const auto at = here.find(CornersOf(before, before.Triangles[t]));
+    if (at != here.end())
+    {
+      keptAs[t] = at->second;
+      kept[static_cast<size_t>(at->second)] = 1;
+    }
+  }
+  for (size_t t = 0; t < remesh.Triangles.size(); ++t)
+  {
+    if (kept[t])
+    {
+      continue;
+    }
+    const int first = static_cast<int>(added.Points.size() / 3);
+    for (int v : remesh.Triangles[t])
+    {
+      const double* p = &remesh.Points[3 * static_cast<size_t>(v)];
+      added.Points.insert(added.Points.end(), p, p + 3);
+    }
+    added.Triangles.push_back({ first, first + 1, first + 2 });
+    addedAs.push_back(static_cast<int>(t));
+  }
+}
+} // namespace
+
+RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, double share,
+  size_t maximumPoints, const Remesh* before, const RemeshFidelity* measuredBefore)
 {
   RemeshFidelity fidelity;
   const double diagonal = input.Diagonal;
@@ -2591,28 +2675,91 @@ RemeshFidelity MeasureFidelity(
   }
   const SurfaceProjector onRemesh(asMesh);
   const std::vector<double>& probes = input.Probes;
-  std::vector<double> distance(probes.size() / 3);
+  std::vector<double>& distance = fidelity.ProbeDistances;
+  std::vector<int>& nearestTriangle = fidelity.ProbeTriangles;
+  distance.assign(probes.size() / 3, 0.0);
+  nearestTriangle.assign(probes.size() / 3, -1);
+  // A probe whose nearest triangle before is also here is nearest to it or to a new one.
+  std::vector<int> keptAs, addedAs;
+  SurfaceMesh added;
+  if (before && measuredBefore && measuredBefore->ProbeTriangles.size() == distance.size())
+  {
+    CompareTriangles(remesh, *before, keptAs, added, addedAs);
+  }
+  const std::unique_ptr<SurfaceProjector> onAdded(
+    added.Triangles.empty() ? nullptr : new SurfaceProjector(added));
   vtkSMPTools::For(0, static_cast<vtkIdType>(distance.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
-      int guess = -1; // the nearest triangle to the point before (probes come in mesh order)
-      for (vtkIdType p = begin; p < end; ++p)
+      // The nearest triangle to the point before (probes come in mesh order).
+      int guess = -1;
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        distance[static_cast<size_t>(p)] =
-          onRemesh.DistanceTo(&probes[3 * static_cast<size_t>(p)], &guess);
+        const size_t p = static_cast<size_t>(i);
+        const double* at = &probes[3 * p];
+        double q[3], weights[3];
+        const int was = keptAs.empty() ? -1 : measuredBefore->ProbeTriangles[p];
+        if (was >= 0 && keptAs[static_cast<size_t>(was)] >= 0)
+        {
+          distance[p] = measuredBefore->ProbeDistances[p];
+          nearestTriangle[p] = keptAs[static_cast<size_t>(was)];
+          // Only a new triangle nearer than that one matters (a hair's margin for rounding).
+          const int t =
+            onAdded ? onAdded->NearestWithin(at, distance[p] * (1.0 + 1e-9), q, weights) : -1;
+          if (t >= 0)
+          {
+            const double d = std::sqrt(Distance2(q, at));
+            if (d < distance[p])
+            {
+              distance[p] = d;
+              nearestTriangle[p] = addedAs[static_cast<size_t>(t)];
+            }
+          }
+          continue;
+        }
+        guess = onRemesh.Nearest(at, q, weights, guess);
+        if (guess >= 0)
+        {
+          distance[p] = std::sqrt(Distance2(q, at));
+          nearestTriangle[p] = guess;
+        }
       }
     });
-  // The remesh measured likewise against the input.
-  const std::vector<double> remeshPoints = CoveringPoints(asMesh, FarFromInput * diagonal);
-  std::vector<double> lift(remeshPoints.size() / 3);
+  // The remesh measured likewise against the input; a point measured before (the same to the
+  // bit) is as far from it as then.
+  std::vector<double>& remeshPoints = fidelity.RemeshPoints;
+  remeshPoints = CoveringPoints(asMesh, FarFromInput * diagonal);
+  std::vector<double>& lift = fidelity.RemeshPointDistances;
+  lift.assign(remeshPoints.size() / 3, -1.0);
+  if (before && measuredBefore)
+  {
+    const std::vector<double>& points = measuredBefore->RemeshPoints;
+    std::unordered_map<PointBits, double, BitsHash> known;
+    known.reserve(points.size() / 3);
+    for (size_t p = 0; p < points.size() / 3; ++p)
+    {
+      known.emplace(BitsOf<3>(&points[3 * p]), measuredBefore->RemeshPointDistances[p]);
+    }
+    for (size_t p = 0; p < lift.size(); ++p)
+    {
+      const auto at = known.find(BitsOf<3>(&remeshPoints[3 * p]));
+      if (at != known.end())
+      {
+        lift[p] = at->second;
+      }
+    }
+  }
   vtkSMPTools::For(0, static_cast<vtkIdType>(lift.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       int guess = -1;
       for (vtkIdType p = begin; p < end; ++p)
       {
-        lift[static_cast<size_t>(p)] =
-          input.Projector.DistanceTo(&remeshPoints[3 * static_cast<size_t>(p)], &guess);
+        if (lift[static_cast<size_t>(p)] < 0.0)
+        {
+          lift[static_cast<size_t>(p)] =
+            input.Projector.DistanceTo(&remeshPoints[3 * static_cast<size_t>(p)], &guess);
+        }
       }
     });
   fidelity.InputToRemesh = *std::max_element(distance.begin(), distance.end()) / diagonal;

@@ -123,6 +123,13 @@ struct RemeshFidelity
   double InputToRemesh = 0.0;    // the farthest input point from the remesh, share of the diagonal
   double RemeshToInput = 0.0;    // the farthest remesh point from the input, likewise
   std::vector<double> FarPoints; // input points where either is beyond the share asked for
+  /// Per probe of the input (RemeshInput::Probes): its distance to the remesh and a nearest
+  /// remesh triangle, for measuring a remesh that differs from this one in places.
+  std::vector<double> ProbeDistances;
+  std::vector<int> ProbeTriangles;
+  /// The remesh's own points it was measured at (CoveringPoints) and their distances to the input.
+  std::vector<double> RemeshPoints;
+  std::vector<double> RemeshPointDistances;
 };
 
 /// How far `remesh` and `input` lie from each other (each measured at its CoveringPoints 0.8%
@@ -130,9 +137,15 @@ struct RemeshFidelity
 /// farther than `share` of the diagonal apart: the input points that far from the remesh (tips
 /// and creases its triangles cut off) and the input points nearest to remesh points that far
 /// from the input (triangles bridging a fold), farthest first, none within twice its distance of
-/// one before it, at most `maximumPoints` of them.
-CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(
-  const Remesh& remesh, const RemeshInput& input, double share, size_t maximumPoints);
+/// one before it, at most `maximumPoints` of them. Given a remesh `before` that this one differs
+/// from in places (as one with sites added differs from the remesh without) and its fidelity
+/// `measuredBefore`, an input probe whose nearest triangle there is also here (the same corners in
+/// the same order) is measured against the triangles that are new here alone, and a remesh point
+/// that was measured there (the same to the bit) is not measured again: the same distances from
+/// far fewer queries.
+CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input,
+  double share, size_t maximumPoints, const Remesh* before = nullptr,
+  const RemeshFidelity* measuredBefore = nullptr);
 
 /// The topology of BuildRemesh's remesh of `dual` without building it whole: its triangles and
 /// split vertices without the shaping (flips, moves and collapses keep the topology). For

@@ -35,8 +35,11 @@ struct SizeClass
 class NearestTriangleSearch
 {
 public:
-  NearestTriangleSearch(const SurfaceMesh& mesh, const double* p)
-    : Mesh(mesh)
+  /// Only triangles nearer than the square root of `bound2` can be found.
+  NearestTriangleSearch(const SurfaceMesh& mesh, const double* p,
+    double bound2 = std::numeric_limits<double>::infinity())
+    : Best2(bound2)
+    , Mesh(mesh)
     , P(p)
   {
   }
@@ -210,6 +213,31 @@ struct SurfaceProjector::Internals
 {
   std::vector<std::unique_ptr<SizeClass>> Classes; // the most triangles first
   std::unique_ptr<AnswerCache> Cache;              // while remembering answers
+
+  /// The search of Nearest and NearestWithin, its answer in `q` and `w` as theirs.
+  int Search(const SurfaceMesh& mesh, const double* p, double bound2, int guess, double q[3],
+    double w[3]) const
+  {
+    NearestTriangleSearch search(mesh, p, bound2);
+    if (guess >= 0)
+    {
+      search.Start(guess);
+    }
+    for (const auto& sizeClass : this->Classes)
+    {
+      search.Walk(*sizeClass);
+    }
+    if (this->Cache && std::isinf(bound2)) // a bounded search is no answer to remember
+    {
+      this->Cache->Add(p, guess, search.Best, search.Q, search.W);
+    }
+    if (search.Best >= 0)
+    {
+      std::copy(search.Q, search.Q + 3, q);
+      std::copy(search.W, search.W + 3, w);
+    }
+    return search.Best;
+  }
 };
 
 SurfaceProjector::SurfaceProjector(const SurfaceMesh& surface)
@@ -310,6 +338,11 @@ void SurfaceProjector::SetRememberAnswers(bool remember)
   this->Internal->Cache.reset(remember ? new AnswerCache : nullptr);
 }
 
+int SurfaceProjector::NearestWithin(const double* p, double within, double q[3], double w[3]) const
+{
+  return this->Internal->Search(this->Mesh, p, within * within, -1, q, w);
+}
+
 int SurfaceProjector::Nearest(const double* p, double q[3], double w[3], int guess) const
 {
   if (guess < 0 || guess >= this->Mesh.NumberOfTriangles())
@@ -328,25 +361,8 @@ int SurfaceProjector::Nearest(const double* p, double q[3], double w[3], int gue
     }
     return triangle;
   }
-  NearestTriangleSearch search(this->Mesh, p);
-  if (guess >= 0)
-  {
-    search.Start(guess);
-  }
-  for (const auto& sizeClass : this->Internal->Classes)
-  {
-    search.Walk(*sizeClass);
-  }
-  if (cache)
-  {
-    cache->Add(p, guess, search.Best, search.Q, search.W);
-  }
-  if (search.Best >= 0)
-  {
-    std::copy(search.Q, search.Q + 3, q);
-    std::copy(search.W, search.W + 3, w);
-  }
-  return search.Best;
+  return this->Internal->Search(
+    this->Mesh, p, std::numeric_limits<double>::infinity(), guess, q, w);
 }
 
 double SurfaceProjector::DistanceTo(const double p[3], int* guess) const

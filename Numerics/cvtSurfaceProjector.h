@@ -33,6 +33,10 @@ public:
   /// triangle (the nearest to a point close by) makes the search quicker.
   int Nearest(const double* p, double q[3], double w[3], int guess = -1) const;
 
+  /// As Nearest, among the triangles nearer to `p` than `within` alone (-1 when none is): far
+  /// quicker where none is, as the search then ends at the trees' roots.
+  int NearestWithin(const double* p, double within, double q[3], double w[3]) const;
+
   /// How far `p` is from the surface (0 when it has no triangle). With `guess`: a guess of the
   /// nearest triangle as for Nearest, replaced by the nearest (for the next point along).
   double DistanceTo(const double p[3], int* guess = nullptr) const;

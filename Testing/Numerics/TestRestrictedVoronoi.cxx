@@ -1475,6 +1475,49 @@ TEST(RestrictedVoronoi, FidelityFindsWhereTheRemeshLiesFarFromTheInput)
   EXPECT_EQ(f.FarPoints.size(), 3u);
 }
 
+TEST(RestrictedVoronoi, FidelityMeasuredAgainstTheRemeshBeforeIsTheSame)
+{
+  // A remesh 0.02 above a flat input, then the same with a dent down to the input (one vertex
+  // lowered): measured again against the first, only probes and points near the dent are asked
+  // anew, yet every distance is the one measured from scratch, to the bit, also those of probes
+  // whose nearest triangle before is still there but which the dent's new triangles come nearer
+  // to (0.011 instead of 0.02 a cell and a bit from the dent's bottom).
+  const cvt::SurfaceMesh square = FlatSquare(10, 0.0, 1.0);
+  const cvt::RemeshInput input(square);
+  const cvt::SurfaceMesh fine = FlatSquare(100, 0.0, 1.0);
+  cvt::Remesh above;
+  above.Points = fine.Points;
+  above.Triangles = fine.Triangles;
+  for (size_t v = 0; v < above.Points.size() / 3; ++v)
+  {
+    above.Points[3 * v + 2] = 0.02;
+  }
+  cvt::Remesh dented = above;
+  const size_t bottom = 50 * 101 + 50;
+  dented.Points[3 * bottom + 2] = 0.0;
+  const cvt::RemeshFidelity before = cvt::MeasureFidelity(above, input, 0.009, 10);
+  const cvt::RemeshFidelity scratch = cvt::MeasureFidelity(dented, input, 0.009, 10);
+  const cvt::RemeshFidelity again = cvt::MeasureFidelity(dented, input, 0.009, 10, &above, &before);
+  ASSERT_EQ(again.ProbeDistances.size(), scratch.ProbeDistances.size());
+  int nearerNow = 0;
+  for (size_t p = 0; p < scratch.ProbeDistances.size(); ++p)
+  {
+    EXPECT_EQ(again.ProbeDistances[p], scratch.ProbeDistances[p]);
+    const double* at = &input.Probes[3 * p];
+    const double offBottom = std::hypot(at[0] - 0.5, at[1] - 0.5);
+    if (offBottom > 0.011 && scratch.ProbeDistances[p] < 0.019)
+    {
+      ++nearerNow; // its nearest triangle before (right above it) is not the nearest now
+    }
+  }
+  EXPECT_GT(nearerNow, 0);
+  EXPECT_EQ(again.RemeshPointDistances, scratch.RemeshPointDistances);
+  EXPECT_EQ(again.InputToRemesh, scratch.InputToRemesh);
+  EXPECT_EQ(again.RemeshToInput, scratch.RemeshToInput);
+  EXPECT_EQ(again.FarPoints, scratch.FarPoints);
+  EXPECT_NEAR(scratch.InputToRemesh * cvt::BoundingBoxDiagonal(square), 0.02, 1e-9);
+}
+
 TEST(RestrictedVoronoi, SphereRemeshStraddlesTheInput)
 {
   // The remesh of 60 sites on a sphere, with its vertices at the sites' surface points, lies
