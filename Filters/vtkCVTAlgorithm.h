@@ -189,6 +189,9 @@ protected:
   int NumberOfSites = 1000;
   int RandomSeed = 1;
   int Method = LBFGS;
+  // 50 would save 18% end to end on surfaces, but their remeshes lose regularity (46 CGAL meshes
+  // at 1000 sites: valence 6 down 0.014 on average, energy up 0.2-0.5%, two more over 1% of the
+  // diagonal from the input).
   int MaximumNumberOfIterations = 100;
   double Tolerance = 1e-6;
   double GradientTolerance = 0.0;

@@ -449,7 +449,12 @@ struct FidelityCandidate
 /// 1.03, lion 1.35 -> 1.00, 3torus 1.09 -> 0.92, bull 1.06 -> 0.90, armadillo 1.01 -> 0.87 (with
 /// the sites at the points alone, as before); a round costs up to four remeshes instead of one or
 /// two; their remeshes ask the input mostly what the one before asked, so it remembers the
-/// answers meanwhile (mpi at 1000 sites: 1.53 -> 1.37 s end to end, oblong 1.96 -> 1.50 s). The
+/// answers meanwhile (mpi at 1000 sites: 1.53 -> 1.37 s end to end, oblong 1.96 -> 1.50 s), and
+/// each is measured again only where it differs from the remesh before (mpi 1.00 -> 0.88 s).
+/// Tried and not taken (the 50 CGAL meshes with far points at 1000 sites, mesh_energy.py): a
+/// FarInputShare of 0.8% brought homer within 1% but took mpi over it; a FarInputSitesShare of
+/// 1.5%, or ending the rounds when one gains too little to reach FarInputShare in the rounds
+/// left, brought none within (the last saved time: oblong 1.06 -> 0.68 s, at 1.46 -> 1.49%). The
 /// CVT's own sites stay as they are; the remesh has a vertex more each.
 bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
   const cvt::MeshTopology& input, const std::function<bool()>& aborted, TopologyRefinement& best,
