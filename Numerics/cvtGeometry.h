@@ -5,9 +5,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 
 namespace cvt
 {
+
+/// A hash of `count` 64-bit words (the bits of coordinates), mixed into `seed`: keys of points and
+/// triangles asked again, equal to the bit.
+inline std::uint64_t HashBits(
+  const std::uint64_t* bits, size_t count, std::uint64_t seed = 0xCBF29CE484222325ull)
+{
+  std::uint64_t h = seed;
+  for (size_t i = 0; i < count; ++i)
+  {
+    h = (h ^ bits[i]) * 0x100000001B3ull;
+    h ^= h >> 29;
+  }
+  return h;
+}
 
 inline double Dot(const double* a, const double* b)
 {

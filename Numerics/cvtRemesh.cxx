@@ -2609,13 +2609,7 @@ struct BitsHash
   template<size_t N>
   size_t operator()(const std::array<std::uint64_t, N>& key) const
   {
-    std::uint64_t h = 0xCBF29CE484222325ull;
-    for (std::uint64_t bits : key)
-    {
-      h = (h ^ bits) * 0x100000001B3ull;
-      h ^= h >> 29;
-    }
-    return static_cast<size_t>(h);
+    return static_cast<size_t>(HashBits(key.data(), N));
   }
 };
 

@@ -195,12 +195,8 @@ private:
   {
     std::uint64_t bits[3];
     std::memcpy(bits, p, sizeof(bits));
-    std::uint64_t h = static_cast<std::uint64_t>(guess + 2) * 0x9E3779B97F4A7C15ull;
-    for (std::uint64_t b : bits)
-    {
-      h = (h ^ b) * 0x100000001B3ull;
-      h ^= h >> 29;
-    }
+    const std::uint64_t h =
+      HashBits(bits, 3, static_cast<std::uint64_t>(guess + 2) * 0x9E3779B97F4A7C15ull);
     return static_cast<size_t>(h & (SlotCount - 1));
   }
 
