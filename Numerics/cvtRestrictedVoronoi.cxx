@@ -193,7 +193,11 @@ void RestrictedVoronoi::Internals::WholeTriangle(int t, Polygon& polygon) const
   polygon.Size = 3;
   for (int k = 0; k < 3; ++k)
   {
-    std::copy(this->Mesh.Point(tri[k]), this->Mesh.Point(tri[k]) + 3, polygon.V[k].P);
+    // Element by element: std::copy of three doubles was a call to memmove (4% of a remesh).
+    const double* corner = this->Mesh.Point(tri[k]);
+    polygon.V[k].P[0] = corner[0];
+    polygon.V[k].P[1] = corner[1];
+    polygon.V[k].P[2] = corner[2];
     polygon.V[k].Label = -1 - k;
     polygon.V[k].Origin = k;
   }
@@ -834,9 +838,15 @@ void RestrictedVoronoi::Internals::Sweep(bool dual, int firstBlock, int lastBloc
       Scratch scratch;
       for (int block = first; block < last; ++block)
       {
-        std::vector<Piece>& pieces = this->BlockPieces[block];
-        std::vector<std::array<int, 4>>& triples = this->BlockTriples[block];
-        ContactList& contacts = this->BlockContacts[block];
+        // The block's lists are filled in this thread's own vectors (their storage swapped in
+        // and back): the lists of neighbouring blocks, which other threads fill meanwhile, share
+        // cache lines, and each append wrote to them (16% of the sweep in one instruction).
+        std::vector<Piece> pieces;
+        std::vector<std::array<int, 4>> triples;
+        ContactList contacts;
+        pieces.swap(this->BlockPieces[block]);
+        triples.swap(this->BlockTriples[block]);
+        std::swap(contacts, this->BlockContacts[block]);
         pieces.clear();
         triples.clear();
         contacts.Contacts.clear();
@@ -846,6 +856,9 @@ void RestrictedVoronoi::Internals::Sweep(bool dual, int firstBlock, int lastBloc
         {
           this->ProcessTriangle(t, dual, pieces, triples, contacts, scratch);
         }
+        pieces.swap(this->BlockPieces[block]);
+        triples.swap(this->BlockTriples[block]);
+        std::swap(contacts, this->BlockContacts[block]);
       }
     });
 }
