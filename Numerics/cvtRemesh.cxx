@@ -820,7 +820,12 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
   const auto probe = [&probes](int p) { return &probes[3 * static_cast<size_t>(p)]; };
   // Per probe: which of its vertex's Near triangles was nearest when last measured, measured
   // first the next time (moves are small: mostly still the nearest, so a probe nearer than the
-  // farthest so far is told after one triangle).
+  // farthest so far is told after one triangle). Tried and not taken (same outputs, counted
+  // closest points, 1000 sites): keeping every probe's distance and nearest triangle, updated
+  // after each move only where the moved vertex's triangles came within it, took more closest
+  // points than measuring again (mpi 13.8 -> 19.0 million, armadillo 2.8 -> 3.8, cheese the
+  // same): each probe's first measure is of all its triangles; and stopping a probe's measure
+  // once a triangle lies within the bound a move is checked against saved no time.
   std::vector<std::uint8_t> nearestSlot(probes.size() / 3, 0);
   // The largest distance to the remesh of the points nearest to the vertices of `group`, and
   // the farthest point; once beyond `bound`, the first point found beyond it.
