@@ -461,7 +461,8 @@ struct FidelityCandidate
 /// triangle's inside). Tried and not taken, 11 meshes at 1000 sites against mesh_energy.py:
 /// measuring between the probes too (triangles split where the corners' distance plus the
 /// triangle's reach passes the share) found those points, but the rounds then chased others
-/// (armadillo 0.87 -> 1.07%, ChineseDragon-10kv 1.01 -> 1.14%, mannequin-devil 0.98 -> 0.96%);
+/// (armadillo 0.87 -> 1.07%, ChineseDragon-10kv 1.01 -> 1.14%; only mannequin-devil gained,
+/// 0.98 -> 0.96%);
 /// and a site at a far point often gets no vertex (a cap: armadillo, each triangle cut in
 /// 16, 1.19%) or loses it to a collapse or fit: inserting it into the nearest triangle, pinned,
 /// brought that one to 0.85% but 3torus 0.92 -> 1.09% (another first round) and mannequin-devil's
