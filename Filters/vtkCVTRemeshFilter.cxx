@@ -5,6 +5,7 @@
 #include "cvtRemesh.h"
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSurfaceMesh.h"
+#include "cvtThreads.h"
 #include "vtkCVTOutputHelpers.h"
 
 #include "vtkCellArray.h"
@@ -535,7 +536,7 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
       {
         return false;
       }
-      vtkSMPTools::For(0, 2, 1,
+      cvt::For(0, 2, 1,
         [&](vtkIdType begin, vtkIdType end)
         {
           for (vtkIdType i = begin; i < end; ++i)

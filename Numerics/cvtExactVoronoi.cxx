@@ -2,7 +2,7 @@
 
 #include "cvtPointCloud.h"
 
-#include "vtkSMPTools.h"
+#include "cvtThreads.h"
 
 #include <cstdint>
 
@@ -186,7 +186,7 @@ void ForEachClippedCell(
   const Polygon domain = Rectangle(grid.XMin(), grid.XMax(), grid.YMin(), grid.YMax());
   const Buckets buckets(grid, sites);
   const double bucketSide = std::min(buckets.Width, buckets.Height);
-  vtkSMPTools::For(static_cast<vtkIdType>(first), static_cast<vtkIdType>(std::max(first, last)), 64,
+  cvt::For(static_cast<vtkIdType>(first), static_cast<vtkIdType>(std::max(first, last)), 64,
     [&](vtkIdType begin, vtkIdType end)
     {
       std::vector<size_t> ring;
@@ -490,7 +490,7 @@ std::vector<int> NearestSiteLabels(const Grid& grid, const std::vector<double>& 
   PointCloud<2> cloud;
   cloud.Points = &sites;
   const PointTree<2> tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-  vtkSMPTools::For(0, grid.Height, 8,
+  cvt::For(0, grid.Height, 8,
     [&](int first, int last)
     {
       for (int j = first; j < last; ++j)

@@ -20,7 +20,7 @@
 #include "cvtPointCloud.h"
 #include "cvtUnionFind.h"
 
-#include "vtkSMPTools.h"
+#include "cvtThreads.h"
 
 namespace cvt
 {
@@ -775,7 +775,7 @@ ProbeNeighbourhoods::ProbeNeighbourhoods(const Remesh& remesh, const std::vector
   PointTree<3> tree(3, cloud);
   tree.buildIndex();
   std::vector<std::uint32_t> nearest(probes.size() / 3);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(nearest.size()),
+  cvt::For(0, static_cast<vtkIdType>(nearest.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType p = begin; p < end; ++p)
@@ -1392,7 +1392,7 @@ void MeasureProbes(const Remesh& remesh, const std::vector<double>& probes,
     const std::array<int, 3>& c = remesh.Triangles[t];
     balls[t][3] = BoundingBall(point(c[0]), point(c[1]), point(c[2]), balls[t].data());
   }
-  vtkSMPTools::For(0, static_cast<vtkIdType>(near.size()),
+  cvt::For(0, static_cast<vtkIdType>(near.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -1490,7 +1490,7 @@ public:
       }
     }
     const std::vector<int> triangles = Flagged(triangleMoved);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()),
+    cvt::For(0, static_cast<vtkIdType>(moved.size()),
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
@@ -1499,7 +1499,7 @@ public:
           this->CornerLift[static_cast<size_t>(v)] = this->Projector.DistanceTo(this->Point(v));
         }
       });
-    vtkSMPTools::For(0, static_cast<vtkIdType>(triangles.size()),
+    cvt::For(0, static_cast<vtkIdType>(triangles.size()),
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
@@ -2687,7 +2687,7 @@ RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, d
   }
   const std::unique_ptr<SurfaceProjector> onAdded(
     added.Triangles.empty() ? nullptr : new SurfaceProjector(added));
-  vtkSMPTools::For(0, static_cast<vtkIdType>(distance.size()),
+  cvt::For(0, static_cast<vtkIdType>(distance.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       // The nearest triangle to the point before (probes come in mesh order).
@@ -2748,7 +2748,7 @@ RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, d
       }
     }
   }
-  vtkSMPTools::For(0, static_cast<vtkIdType>(lift.size()),
+  cvt::For(0, static_cast<vtkIdType>(lift.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       int guess = -1;

@@ -6,8 +6,6 @@
 #include "cvtThreads.h"
 #include "cvtUnionFind.h"
 
-#include "vtkSMPTools.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -556,7 +554,7 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
   // + 1) sorted by part: few.
   std::vector<int> pieceEuler(pieces.size());
   std::vector<std::uint8_t> unpaired(pieces.size(), 0); // bit k: edge k has no triangle across
-  vtkSMPTools::For(0, static_cast<vtkIdType>(pieces.size()),
+  cvt::For(0, static_cast<vtkIdType>(pieces.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType p = begin; p < end; ++p)
@@ -784,7 +782,7 @@ void RestrictedVoronoi::Internals::LabelPoints()
   {
     this->PointLabels.assign(pointCount, -1);
   }
-  vtkSMPTools::For(0, pointCount, 1024,
+  cvt::For(0, pointCount, 1024,
     [this, siteCount](int begin, int end)
     {
       for (int p = begin; p < end; ++p)
@@ -832,7 +830,7 @@ void RestrictedVoronoi::Internals::Sweep(bool dual, int firstBlock, int lastBloc
   this->LabelPoints();
   const int triangleCount = this->Mesh.NumberOfTriangles();
   const int blockSize = (triangleCount + this->BlockCount - 1) / this->BlockCount;
-  vtkSMPTools::For(firstBlock, lastBlock, 1,
+  cvt::For(firstBlock, lastBlock, 1,
     [&](int first, int last)
     {
       Scratch scratch;
@@ -1085,7 +1083,7 @@ void RestrictedVoronoi::Internals::ComputeTriangleMoments()
 {
   const int triangleCount = this->Mesh.NumberOfTriangles();
   this->TriangleMoments.resize(triangleCount);
-  vtkSMPTools::For(0, triangleCount, 4096,
+  cvt::For(0, triangleCount, 4096,
     [this](int begin, int end)
     {
       Polygon polygon;
@@ -1157,7 +1155,7 @@ bool RestrictedVoronoi::SetSites(const std::vector<double>& sites)
   {
     return true;
   }
-  vtkSMPTools::For(0, siteCount, 256,
+  cvt::For(0, siteCount, 256,
     [&d](int begin, int end)
     {
       std::uint32_t ids[NeighborCount + 1];
@@ -1268,7 +1266,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   }
   std::partial_sum(index.First.begin(), index.First.end(), index.First.begin());
   index.Site.resize(pieces.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(pieces.size()),
+  cvt::For(0, static_cast<vtkIdType>(pieces.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType p = begin; p < end; ++p)

@@ -4,7 +4,7 @@
 #include "cvtPointCloud.h"
 #include "cvtSampling.h"
 
-#include "vtkSMPTools.h"
+#include "cvtThreads.h"
 
 #include <cstdint>
 
@@ -443,7 +443,7 @@ std::vector<int> NearestSiteLabels(const GeometryImage& image, const std::vector
   PointCloud<3> cloud;
   cloud.Points = &sites;
   const PointTree<3> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-  vtkSMPTools::For(0, image.NumberOfPixels(), 4096,
+  cvt::For(0, image.NumberOfPixels(), 4096,
     [&](long long first, long long last)
     {
       for (long long p = first; p < last; ++p)

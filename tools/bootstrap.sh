@@ -8,7 +8,8 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
 # ParaView 5.11's development package (its bundled VTK 9.2) and the packages its exported
-# CMake configuration looks for, EGL for the headless OpenGL context, and the test tools
+# CMake configuration looks for, EGL for the headless OpenGL context, the numerical core's
+# libraries (Eigen, LBFGS++, nanoflann, oneTBB for its threads), and the test tools
 # (assimp-testmodels: public mesh files, BSD-licensed, for Testing/public-files.sh).
 packages=(
   build-essential cmake
@@ -21,9 +22,9 @@ packages=(
   libxml2-dev libexpat1-dev libjsoncpp-dev libpugixml-dev libcgns-dev libproj-dev libfmt-dev
   libprotobuf-dev protobuf-compiler
   libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
-  libeigen3-dev liblbfgspp-dev libnanoflann-dev
+  libeigen3-dev liblbfgspp-dev libnanoflann-dev libtbb-dev
   libgtest-dev googletest python3-matplotlib xvfb xauth xdotool assimp-testmodels
-  libvtk9.1 libvtk9.1-qt libtbb-dev
+  libvtk9.1 libvtk9.1-qt
 )
 missing=()
 for p in "${packages[@]}"; do
