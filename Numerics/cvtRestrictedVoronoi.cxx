@@ -75,6 +75,11 @@ struct ContactList
 /// them, rarely). 12 is quicker than 20 (fewer found per site and iteration) and than 8 (more
 /// fallbacks to the tree): turbine, bunny, armadillo and spider at 1000 sites.
 constexpr int NeighborCount = 12;
+/// Nearest sites searched per site: the NeighborCount nearest clip, and all of them stay the
+/// candidates of the next evaluations while it is certain that the NeighborCount nearest are
+/// still among them (SetSites). 24 reach the hexagonal ring beyond the 12 (2.65 spacings
+/// against 1.73), a margin of a spacing for the sites' moves.
+constexpr int CandidateCount = 24;
 constexpr double CornerAngleDegrees = 60.0;
 /// Edges whose triangles' normals differ by more are sharp (CAD models' creases) ...
 constexpr double FeatureAngleDegrees = 60.0;
@@ -120,6 +125,13 @@ struct RestrictedVoronoi::Internals
   int K = 0;                            // neighbours stored per site
   std::vector<std::uint32_t> Neighbors; // K per site, nearest first
   std::vector<double> NeighborDistance2;
+  int C = 0;                             // candidates stored per site
+  std::vector<std::uint32_t> Candidates; // C per site, nearest first
+  std::vector<double> CandidateReach;    // per site: every other site lies at least this far
+  std::vector<double> PreviousSites;     // where the sites were when the candidates were found
+  /// Finds the neighbours of sites [begin, end), which moved by at most `largestMove` since
+  /// their candidates were found (infinity: not found).
+  void FindNeighbors(int begin, int end, double largestMove);
 
   /// Per triangle: density-weighted mass, centroid and integral of rho |x - centroid|^2, so a
   /// triangle inside one cell costs a few operations: E = J + m |g - s|^2.
@@ -1125,6 +1137,75 @@ bool RestrictedVoronoi::SetDensity(const std::vector<double>& density)
 }
 
 //------------------------------------------------------------------------------
+// The k-d tree's searches were a quarter of an optimisation on small meshes. Late in it the
+// sites move by a small part of their spacing per evaluation: a site that moved by m, while
+// none moved by more than M, is still nearer to its candidates than to any other site when its
+// K-th nearest candidate is nearer than its reach less m + M (triangle inequality: the others
+// lay beyond the reach and came at most m + M closer). Then the candidates, sorted again, give
+// the same K nearest as the tree, and the reach shrinks by m + M; else the tree is asked.
+void RestrictedVoronoi::Internals::FindNeighbors(int begin, int end, double largestMove)
+{
+  std::uint32_t ids[CandidateCount + 1];
+  double d2[CandidateCount + 1];
+  const size_t k = static_cast<size_t>(this->K), c = static_cast<size_t>(this->C);
+  for (int i = begin; i < end; ++i)
+  {
+    const double* site = &this->Sites[3 * static_cast<size_t>(i)];
+    std::uint32_t* candidates = &this->Candidates[static_cast<size_t>(i) * c];
+    double& reach = this->CandidateReach[static_cast<size_t>(i)];
+    bool found = false;
+    if (std::isfinite(largestMove))
+    {
+      const double nearer = reach -
+        std::sqrt(Distance2(site, &this->PreviousSites[3 * static_cast<size_t>(i)])) - largestMove;
+      if (nearer > 0.0)
+      {
+        // Insertion sort by the distances now (the order changes little).
+        for (size_t n = 0; n < c; ++n)
+        {
+          const std::uint32_t id = candidates[n];
+          const double dn = Distance2(site, &this->Sites[3 * static_cast<size_t>(id)]);
+          size_t at = n;
+          for (; at > 0 && d2[at - 1] > dn; --at)
+          {
+            ids[at] = ids[at - 1];
+            d2[at] = d2[at - 1];
+          }
+          ids[at] = id;
+          d2[at] = dn;
+        }
+        // Coincident sites take the tree's order (the cell goes to the lower index).
+        found = d2[0] > 0.0 && d2[k - 1] < nearer * nearer * (1.0 - 1e-12);
+        if (found)
+        {
+          reach = nearer;
+        }
+      }
+    }
+    if (!found)
+    {
+      const size_t results = this->Tree->knnSearch(site, c + 1, ids, d2);
+      // The first result is the site itself (or a site at the same place): skipped. Were it not
+      // among them, the last is dropped, no nearer than the others.
+      size_t kept = 0;
+      for (size_t f = 0; f < results && kept < c; ++f)
+      {
+        if (ids[f] != static_cast<std::uint32_t>(i))
+        {
+          ids[kept] = ids[f];
+          d2[kept] = d2[f];
+          ++kept;
+        }
+      }
+      reach = std::sqrt(d2[c - 1]);
+    }
+    std::copy(ids, ids + c, candidates);
+    std::copy(ids, ids + k, &this->Neighbors[static_cast<size_t>(i) * k]);
+    std::copy(d2, d2 + k, &this->NeighborDistance2[static_cast<size_t>(i) * k]);
+  }
+}
+
+//------------------------------------------------------------------------------
 bool RestrictedVoronoi::SetSites(const std::vector<double>& sites)
 {
   Internals& d = *this->Impl;
@@ -1140,6 +1221,7 @@ bool RestrictedVoronoi::SetSites(const std::vector<double>& sites)
     }
   }
   const bool sameCount = d.Sites.size() == sites.size();
+  d.PreviousSites.swap(d.Sites);
   d.Sites = sites;
   if (!sameCount)
   {
@@ -1148,40 +1230,28 @@ bool RestrictedVoronoi::SetSites(const std::vector<double>& sites)
   d.Cloud.Points = &d.Sites;
   d.Tree.reset(new PointTree<3>(3, d.Cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)));
   const int siteCount = static_cast<int>(sites.size() / 3);
+  double largestMove = std::numeric_limits<double>::infinity();
+  if (sameCount && d.C == std::min(CandidateCount, siteCount - 1))
+  {
+    largestMove = 0.0;
+    for (size_t c = 0; c < d.Sites.size(); c += 3)
+    {
+      largestMove = std::max(largestMove, Distance2(&d.Sites[c], &d.PreviousSites[c]));
+    }
+    largestMove = std::sqrt(largestMove);
+  }
   d.K = std::min(NeighborCount, siteCount - 1);
+  d.C = std::min(CandidateCount, siteCount - 1);
   d.Neighbors.resize(static_cast<size_t>(siteCount) * d.K);
   d.NeighborDistance2.resize(static_cast<size_t>(siteCount) * d.K);
+  d.Candidates.resize(static_cast<size_t>(siteCount) * d.C);
+  d.CandidateReach.resize(static_cast<size_t>(siteCount));
   if (d.K == 0)
   {
     return true;
   }
   cvt::For(0, siteCount, 256,
-    [&d](int begin, int end)
-    {
-      std::uint32_t ids[NeighborCount + 1];
-      double d2[NeighborCount + 1];
-      for (int i = begin; i < end; ++i)
-      {
-        const size_t found =
-          d.Tree->knnSearch(&d.Sites[3 * static_cast<size_t>(i)], d.K + 1, ids, d2);
-        int kept = 0;
-        for (size_t f = 0; f < found && kept < d.K; ++f)
-        {
-          if (ids[f] != static_cast<std::uint32_t>(i))
-          {
-            d.Neighbors[static_cast<size_t>(i) * d.K + kept] = ids[f];
-            d.NeighborDistance2[static_cast<size_t>(i) * d.K + kept] = d2[f];
-            ++kept;
-          }
-        }
-        for (; kept < d.K; ++kept)
-        {
-          // Only when the site itself was not among the results (equal sites): repeat the last.
-          d.Neighbors[static_cast<size_t>(i) * d.K + kept] = ids[found - 1];
-          d.NeighborDistance2[static_cast<size_t>(i) * d.K + kept] = d2[found - 1];
-        }
-      }
-    });
+    [&d, largestMove](int begin, int end) { d.FindNeighbors(begin, end, largestMove); });
   return true;
 }
 

@@ -379,6 +379,43 @@ TEST(RestrictedVoronoi, SumsDoNotDependOnTheThreadCount)
   EXPECT_EQ(one.MomentX, two.MomentX);
 }
 
+TEST(RestrictedVoronoi, MovedSitesGiveTheSumsOfAFreshEngine)
+{
+  // An engine keeps each site's nearest sites from one evaluation to the next while their moves
+  // leave them certainly the nearest: its sums must stay, to the bit, those of an engine that
+  // searches them all again. Small moves (kept), a site jumping next to another (not kept for
+  // either) and all sites moving far (none kept).
+  const cvt::SurfaceMesh mesh = Sphere(4);
+  std::vector<double> sites = SitesNearSphere(300, 11);
+  const double spacing = std::sqrt(4.0 * 3.14159 / 300.0);
+  std::mt19937_64 rng(3);
+  cvt::RestrictedVoronoi kept;
+  ASSERT_TRUE(kept.SetMesh(mesh));
+  for (int step = 0; step < 40; ++step)
+  {
+    const double move = step == 30 ? spacing : 0.03 * spacing;
+    for (double& c : sites)
+    {
+      c += move * (2.0 * cvt::Uniform01(rng) - 1.0);
+    }
+    if (step % 10 == 5)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        sites[3 * step + k] = sites[3 * (step + 100) + k] + 0.1 * spacing;
+      }
+    }
+    cvt::RestrictedVoronoi fresh;
+    cvt::CellSums keptSums, freshSums;
+    ASSERT_TRUE(kept.SetSites(sites) && kept.ComputeCellSums(keptSums));
+    ASSERT_TRUE(fresh.SetMesh(mesh) && fresh.SetSites(sites) && fresh.ComputeCellSums(freshSums));
+    ASSERT_EQ(keptSums.Energy, freshSums.Energy) << "step " << step;
+    ASSERT_EQ(keptSums.Mass, freshSums.Mass) << "step " << step;
+    ASSERT_EQ(keptSums.MomentX, freshSums.MomentX) << "step " << step;
+    ASSERT_EQ(kept.GetPointLabels(), fresh.GetPointLabels()) << "step " << step;
+  }
+}
+
 TEST(RestrictedVoronoi, SharedWorkAddsUpToTheSumsOfOneProcess)
 {
   // Two engines play two MPI ranks: each clips half of the blocks of triangles; part 1 hands
