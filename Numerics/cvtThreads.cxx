@@ -22,6 +22,13 @@ namespace
 /// serially, as vtkSMPTools' IsParallel makes it.
 std::atomic<bool> InParallel{ false };
 
+/// Whether vtkSMPTools runs its loops on the calling thread alone.
+bool SequentialBackend()
+{
+  const char* backend = vtkSMPTools::GetBackend();
+  return backend && std::string(backend) == "Sequential";
+}
+
 /// The worker threads, kept between loops; made again when vtkSMPTools' count changes (a loop
 /// still running on the former ones holds them until it ends).
 std::shared_ptr<tbb::task_arena> Arena(int threads)
@@ -40,8 +47,7 @@ std::shared_ptr<tbb::task_arena> Arena(int threads)
 //------------------------------------------------------------------------------
 void UseThreads()
 {
-  const char* backend = vtkSMPTools::GetBackend();
-  if (backend && std::string(backend) == "Sequential" && !std::getenv("VTK_SMP_BACKEND_IN_USE"))
+  if (SequentialBackend() && !std::getenv("VTK_SMP_BACKEND_IN_USE"))
   {
     vtkSMPTools::SetBackend("STDThread");
   }
@@ -56,9 +62,8 @@ void ForChunks(vtkIdType first, vtkIdType last, vtkIdType grain,
   {
     return;
   }
-  const char* backend = vtkSMPTools::GetBackend();
   // No more than oneTBB may start (the processor affinity mask can allow fewer than VTK counts).
-  const int threads = backend && std::string(backend) == "Sequential"
+  const int threads = SequentialBackend()
     ? 1
     : std::max(
         1, std::min(vtkSMPTools::GetEstimatedNumberOfThreads(), tbb::info::default_concurrency()));
