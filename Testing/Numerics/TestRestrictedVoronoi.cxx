@@ -387,7 +387,7 @@ TEST(RestrictedVoronoi, MovedSitesGiveTheSumsOfAFreshEngine)
   // either) and all sites moving far (none kept).
   const cvt::SurfaceMesh mesh = Sphere(4);
   std::vector<double> sites = SitesNearSphere(300, 11);
-  const double spacing = std::sqrt(4.0 * 3.14159 / 300.0);
+  const double spacing = std::sqrt(cvt::SurfaceArea(mesh) / 300.0);
   std::mt19937_64 rng(3);
   cvt::RestrictedVoronoi kept;
   ASSERT_TRUE(kept.SetMesh(mesh));
