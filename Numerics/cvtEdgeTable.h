@@ -57,12 +57,15 @@ public:
     // The uses sorted by (key, triangle) in linear time: counted into buckets by the edge's
     // smaller point (a key's high half), then each bucket, a few uses, sorted in place. On a
     // mesh of a million triangles this is several times quicker than sorting all the uses.
+    // Indices into the uses are 32-bit (a mesh of over a billion triangles does not fit in
+    // memory anyway): the table is rebuilt several times per run, and each fresh page of it
+    // costs its first touch.
     int points = 0;
     for (const auto& triangle : triangles)
     {
       points = std::max({ points, triangle[0] + 1, triangle[1] + 1, triangle[2] + 1 });
     }
-    std::vector<size_t> bucketStart(static_cast<size_t>(points) + 1, 0);
+    std::vector<std::uint32_t> bucketStart(static_cast<size_t>(points) + 1, 0);
     for (const auto& triangle : triangles)
     {
       for (int e = 0; e < 3; ++e)
@@ -75,7 +78,7 @@ public:
       bucketStart[p] += bucketStart[p - 1];
     }
     this->Uses.resize(3 * triangles.size());
-    std::vector<size_t> next(bucketStart.begin(), bucketStart.end() - 1);
+    std::vector<std::uint32_t> next(bucketStart.begin(), bucketStart.end() - 1);
     for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
     {
       for (int e = 0; e < 3; ++e)
@@ -89,16 +92,19 @@ public:
       std::sort(this->Uses.begin() + bucketStart[p], this->Uses.begin() + bucketStart[p + 1]);
     }
     this->GroupOf.resize(this->Uses.size());
+    // Room for one edge per use: only the pages written are touched, and nothing is copied as
+    // the list grows.
+    this->Starts.reserve(this->Uses.size() + 1);
     for (size_t u = 0; u < this->Uses.size(); ++u)
     {
       if (u == 0 || this->Uses[u].Key != this->Uses[u - 1].Key)
       {
-        this->Starts.push_back(u);
+        this->Starts.push_back(static_cast<std::uint32_t>(u));
       }
       this->GroupOf[3 * static_cast<size_t>(this->Uses[u].Triangle) + this->Uses[u].Local] =
-        this->Starts.size() - 1;
+        static_cast<std::uint32_t>(this->Starts.size() - 1);
     }
-    this->Starts.push_back(this->Uses.size());
+    this->Starts.push_back(static_cast<std::uint32_t>(this->Uses.size()));
   }
   /// The uses of edge `local` of triangle `t` (its own included).
   Range At(int t, int local) const
@@ -120,8 +126,8 @@ public:
 
 private:
   std::vector<EdgeUse> Uses;
-  std::vector<size_t> Starts;
-  std::vector<size_t> GroupOf; // per (triangle, local edge)
+  std::vector<std::uint32_t> Starts;
+  std::vector<std::uint32_t> GroupOf; // per (triangle, local edge)
 };
 
 } // namespace cvt
