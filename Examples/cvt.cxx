@@ -14,6 +14,7 @@
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <malloc.h>
 #include <new>
 #include <string>
 #include <vector>
@@ -24,6 +25,13 @@ int main(int argc, char* argv[])
   // Past a file-size limit (ulimit -f), writes fail with EFBIG and are reported; the default
   // action would kill the program.
   std::signal(SIGXFSZ, SIG_IGN);
+  // Memory freed by one stage stays with the process for the next: the stages allocate and free
+  // arrays of tens of megabytes (edge tables, Voronoi pieces), which glibc by default maps
+  // afresh and unmaps each time, and a fresh page costs its first touch, 6 to 11 us on these
+  // virtual machines (1.2 million triangles at 1000 sites: 372,000 page faults -> 210,000,
+  // 14.8 -> 12.6 s end to end). The program runs one job and exits, so nothing needs returning.
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   Options options;
   try
   {
