@@ -1301,6 +1301,13 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   // below by triangle and cell: PieceIndex).
   std::vector<const SiteContact*> pieces;
   std::vector<const std::array<double, 6>*> segmentsOf; // per piece: its border segments
+  size_t pieceCount = 0;
+  for (const ContactList& block : d.BlockContacts)
+  {
+    pieceCount += block.Contacts.size();
+  }
+  pieces.reserve(pieceCount); // a million pieces for a large mesh: no copies as they are listed
+  segmentsOf.reserve(pieceCount);
   for (const ContactList& block : d.BlockContacts)
   {
     for (const SiteContact& c : block.Contacts)
