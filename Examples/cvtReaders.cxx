@@ -17,7 +17,9 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
+#include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
+#include "vtkTrivialProducer.h"
 #include "vtkXMLImageDataReader.h"
 #include "vtkXMLPolyDataReader.h"
 
@@ -30,6 +32,7 @@
 #include <iostream>
 #include <iterator>
 #include <new>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -51,21 +54,54 @@ std::string Extension(const std::string& path)
   return ext;
 }
 
+/// The probe child's exit status when it read the mesh but could not hand it over (out of
+/// memory): the parent then reads the file itself.
+constexpr int HandOverFailed = 4;
+
+/// An in-memory file that ProbeReader's child writes the mesh it read into, for the parent to
+/// read (-1 where there is none); closed with this.
+struct HandOverFile
+{
+  int Descriptor = -1;
+  explicit HandOverFile(bool wanted)
+    : Descriptor(wanted ? static_cast<int>(memfd_create("cvt-input-mesh", MFD_CLOEXEC)) : -1)
+  {
+  }
+  ~HandOverFile()
+  {
+    if (this->Descriptor >= 0)
+    {
+      close(this->Descriptor);
+    }
+  }
+  /// Its path, as readers and writers of files take it.
+  std::string Path() const { return "/proc/self/fd/" + std::to_string(this->Descriptor); }
+};
+
 /// Some of VTK's readers crash or abort on corrupt files (PNG through libpng's error path,
 /// binary legacy VTK and PLY, binary STL with a wrong triangle count). So the file is read once
 /// in a child process first: a signal there, or no end within a minute, becomes a clear error
 /// here instead of a crash or a hang. A reader that reports an error (a file that is not of its
 /// format: VTK's PNG reader then still gives a 1 x 1 image) fails with the reader's message; the
 /// child's own stderr is dropped, so that libpng's and the readers' texts do not reach the user.
-void ProbeReader(vtkAlgorithm* reader, const std::string& path)
+/// With `handOver` (meshes), the child writes what it read into an in-memory file as binary
+/// legacy VTK (lossless: every array with its type, the field data), and what is returned has
+/// read that, so the file is parsed once, not twice (bunny00's 75,000 triangles, medians of 3
+/// runs: .obj 0.42 -> 0.26 s, .stl 0.25 -> 0.17 s; a compressed .vtp of 1.2 million, 0.91 s
+/// either way). Otherwise, or where the child could not (no in-memory file), the reader is
+/// returned to read the file again here. Images are read twice: the legacy form would lose an
+/// image's extent and direction.
+vtkSmartPointer<vtkAlgorithm> ProbeReader(
+  vtkSmartPointer<vtkAlgorithm> reader, const std::string& path, bool handOver)
 {
   std::cout.flush();
   std::cerr.flush();
   int message[2];
   if (pipe(message) != 0)
   {
-    return; // no probe possible: read as usual
+    return reader; // no probe possible: read as usual
   }
+  const HandOverFile handed(handOver);
   const pid_t child = fork();
   if (child == 0)
   {
@@ -79,20 +115,28 @@ void ProbeReader(vtkAlgorithm* reader, const std::string& path)
     vtkNew<ErrorObserver> errors;
     reader->AddObserver(vtkCommand::ErrorEvent, errors);
     reader->Update();
-    if (errors->Message.empty())
+    if (!errors->Message.empty())
     {
-      std::_Exit(0);
+      // A failed write leaves the parent an empty text: it then says only that reading failed.
+      [[maybe_unused]] const ssize_t written =
+        write(message[1], errors->Message.data(), errors->Message.size());
+      std::_Exit(ReaderReportedAnError);
     }
-    // A failed write leaves the parent an empty text: it then says only that reading failed.
-    [[maybe_unused]] const ssize_t written =
-      write(message[1], errors->Message.data(), errors->Message.size());
-    std::_Exit(ReaderReportedAnError);
+    if (handed.Descriptor >= 0)
+    {
+      vtkNew<vtkPolyDataWriter> writer;
+      writer->SetInputConnection(reader->GetOutputPort());
+      writer->SetFileTypeToBinary();
+      writer->SetFileName(handed.Path().c_str());
+      std::_Exit(writer->Write() ? 0 : HandOverFailed);
+    }
+    std::_Exit(0);
   }
   close(message[1]);
   if (child < 0)
   {
     close(message[0]);
-    return; // no probe possible: read as usual
+    return reader; // no probe possible: read as usual
   }
   std::string text;
   char buffer[512];
@@ -109,7 +153,8 @@ void ProbeReader(vtkAlgorithm* reader, const std::string& path)
   }
   // The child ends with _Exit(0) unless the reader kills it (a signal, or an exit status other
   // than 0, as a sanitizer turns a crash into).
-  if (WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) != 0))
+  if (WIFSIGNALED(status) ||
+    (WIFEXITED(status) && WEXITSTATUS(status) != 0 && WEXITSTATUS(status) != HandOverFailed))
   {
     std::string why = "the reader crashed on it";
     if (WIFSIGNALED(status))
@@ -119,6 +164,22 @@ void ProbeReader(vtkAlgorithm* reader, const std::string& path)
     }
     Fail("cannot read --input '" + path + "': the file is corrupt or truncated (" + why + ")");
   }
+  if (handed.Descriptor < 0 || WEXITSTATUS(status) == HandOverFailed)
+  {
+    return reader;
+  }
+  vtkNew<vtkPolyDataReader> handedOver;
+  vtkNew<ErrorObserver> handOverErrors;
+  handedOver->AddObserver(vtkCommand::ErrorEvent, handOverErrors);
+  handedOver->SetFileName(handed.Path().c_str());
+  handedOver->Update();
+  if (!handOverErrors->Message.empty())
+  {
+    return reader; // out of memory in the middle of it: try the file itself
+  }
+  auto mesh = vtkSmartPointer<vtkTrivialProducer>::New();
+  mesh->SetOutput(handedOver->GetOutput());
+  return mesh;
 }
 
 /// A VTK reader of type Reader for `path`.
@@ -217,7 +278,7 @@ struct MeshFormat
   vtkSmartPointer<vtkAlgorithm> (*Open)(const std::string& path);
   /// Read in a child first (ProbeReader). Our own OFF reader is not: the fuzz tests run it
   /// in-process on damaged files and it refuses each with an error, and the probe would cost
-  /// a second read and a fork (0.06 s of 0.10 s on a 75k-triangle mesh).
+  /// a fork and the hand-over.
   bool Probe;
 };
 const MeshFormat MeshFormats[] = { { "vtp", Open<vtkXMLPolyDataReader>, true },
@@ -253,7 +314,7 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options)
     Fail("--input '" + options.Input + "' has an unknown type; use .png .jpg .vti .mha");
   }
   vtkSmartPointer<vtkAlgorithm> reader = ImageReader(options.Input, ext);
-  ProbeReader(reader, options.Input);
+  ProbeReader(reader, options.Input, false);
   reader->Update();
   vtkImageData* read = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!read || read->GetNumberOfPoints() == 0)
@@ -354,11 +415,7 @@ vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options)
     }
   }
   vtkSmartPointer<vtkAlgorithm> reader = format->Open(options.Input);
-  if (format->Probe)
-  {
-    ProbeReader(reader, options.Input);
-  }
-  return reader;
+  return format->Probe ? ProbeReader(reader, options.Input, true) : reader;
 }
 
 } // namespace cvtcli

@@ -24,8 +24,9 @@ vtkSmartPointer<vtkImageData> ReadDensityImage(const Options& options);
 /// The --initial-sites file as points.
 vtkSmartPointer<vtkPolyData> ReadSitesCsv(const std::string& path);
 
-/// A reader for the --input mesh, chosen by extension, that has read the file once in a child
-/// process without crashing (not updated here).
+/// What gives the --input mesh: the reader for its extension, not updated yet, or, where that
+/// reader has read the file in a child process first (to contain its crashes), the mesh that
+/// the child handed over.
 vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options);
 
 } // namespace cvtcli

@@ -91,6 +91,18 @@ if ! CVT_OPENGL_CONTEXT=none env -u DISPLAY "$CVT" surface --input "$T/tetra.off
     grep -q "cvt.png not written" "$T/log"; then
   echo "the surface picture was not written without OpenGL:"; cat "$T/log"; bad=1
 fi
+# A mesh is parsed once (the reader's crash-proof child hands it over): one from a named pipe,
+# which can be read only once, is remeshed, where a second read would wait for ever.
+printf '%s\n' ply 'format ascii 1.0' 'element vertex 4' 'property float x' 'property float y' \
+  'property float z' 'element face 4' 'property list uchar int vertex_indices' end_header \
+  '0 0 0' '1 0 0' '0 1 0' '0 0 1' '3 0 2 1' '3 0 1 3' '3 1 2 3' '3 0 3 2' > "$T/tetra.ply"
+mkfifo "$T/piped.ply"
+cat "$T/tetra.ply" > "$T/piped.ply" &
+if ! timeout 60 env -u DISPLAY "$CVT" surface --input "$T/piped.ply" --sites 20 --iterations 5 \
+    --report --output "$T/piped" > "$T/log" 2>&1 || ! grep -q "remesh topology *1 parts, genus 0, 0 boundary loops" "$T/log"; then
+  echo "the PLY tetrahedron from a named pipe was not remeshed (read twice?):"; cat "$T/log"; bad=1
+fi
+kill %1 2> /dev/null # the writer, where the pipe was not read
 head -n 5 "$T/tetra.off" > "$T/truncated.off"
 expect_error "truncated.off' line 5: the file ends after 3 of its 4 vertices" surface --input "$T/truncated.off"
 # An explicit engine is used and named.
