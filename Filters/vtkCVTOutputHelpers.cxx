@@ -29,7 +29,11 @@
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <utf8.h> // utfcpp
+
 #include <algorithm>
+#include <cstring>
+#include <iterator>
 #include <numeric>
 #include <vector>
 
@@ -50,6 +54,28 @@ void AddFieldString(vtkFieldData* fields, const char* name, const std::string& v
   array->SetName(name);
   array->InsertNextValue(value);
   fields->AddArray(array);
+}
+
+int MakeArrayNamesUtf8(vtkFieldData* data)
+{
+  int renamed = 0;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(a);
+    const char* name = array ? array->GetName() : nullptr;
+    if (!name || utf8::is_valid(name, name + std::strlen(name)))
+    {
+      continue;
+    }
+    std::string text; // each byte a Latin-1 character, that is a code point below 256
+    for (const char* c = name; *c; ++c)
+    {
+      utf8::append(static_cast<unsigned char>(*c), std::back_inserter(text));
+    }
+    array->SetName(text.c_str());
+    ++renamed;
+  }
+  return renamed;
 }
 
 vtkSmartPointer<vtkCellArray> TriangleCells(const std::vector<std::array<int, 3>>& triangles)

@@ -37,6 +37,11 @@ void AddFieldValue(vtkFieldData* fields, const char* name, double value);
 /// A one-value string array named `name` in `fields`.
 void AddFieldString(vtkFieldData* fields, const char* name, const std::string& value);
 
+/// Renames the arrays of `data` whose names are not UTF-8 (Latin-1 text, as an OBJ file's
+/// material names give VTK's OBJ reader) to that text in UTF-8: VTK's XML writers write names
+/// as they are, and a .vtp with such a name cannot be read back. Returns how many were renamed.
+int MakeArrayNamesUtf8(vtkFieldData* data);
+
 /// The sites output: one vertex per site (flat `sites`, 2 or 3 coordinates each; z for 2D),
 /// point arrays SiteId, Mass, Energy. Returns the points, for the dual or remesh to share.
 vtkSmartPointer<vtkPoints> FillSites(vtkPolyData* output, const std::vector<double>& sites,

@@ -646,7 +646,8 @@ bool ReadGivenSites(vtkPointSet* given, std::vector<double>& sites, std::string&
   return true;
 }
 
-/// The labels output: the repaired mesh, its point data taken from the input's points.
+/// The labels output: the repaired mesh, its point data taken from the input's points (names in
+/// UTF-8, for the XML writers).
 void FillLabels(vtkPolyData* output, vtkPolyData* source, const cvt::SurfaceMesh& mesh,
   const std::vector<int>& labels)
 {
@@ -660,6 +661,7 @@ void FillLabels(vtkPolyData* output, vtkPolyData* source, const cvt::SurfaceMesh
     points->SetPoint(p, mesh.Point(p));
     pd->CopyData(source->GetPointData(), mesh.SourceIds[p], p);
   }
+  cvtvtk::MakeArrayNamesUtf8(pd);
   output->SetPoints(points);
   output->SetPolys(cvtvtk::TriangleCells(mesh.Triangles));
   pd->AddArray(cvtvtk::SiteIdArray(labels));

@@ -29,6 +29,8 @@
 #include "vtkTable.h"
 #include "vtkTriangleFilter.h"
 #include "vtkVersionMacros.h" // for VTK_VERSION_CHECK
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
 
 #include "cvtFilterTestSupport.h"
 
@@ -697,6 +699,46 @@ TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)
     right += sites->GetPoint(i)[0] > 0;
   }
   EXPECT_GT(right, 0.6 * sites->GetNumberOfPoints());
+}
+
+// A point array named in Latin-1 (VTK's OBJ reader names texture coordinates after an OBJ's
+// materials, as assimp's regr01.obj "Terraind\xe6k") is carried under its UTF-8 name: written
+// as it was, the remesh's .vtp could not be read back (an XML name is UTF-8).
+TEST(RemeshFilter, ArrayNamesOfTheInputReachTheOutputsInUtf8)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(24);
+  sphere->SetPhiResolution(12);
+  sphere->Update();
+  vtkNew<vtkPolyData> mesh;
+  mesh->ShallowCopy(sphere->GetOutput());
+  mesh->GetPointData()->Initialize();
+  vtkNew<vtkDoubleArray> latin1;
+  latin1->SetName("Terraind\xe6k");
+  latin1->SetNumberOfValues(mesh->GetNumberOfPoints());
+  latin1->Fill(2.0);
+  mesh->GetPointData()->AddArray(latin1);
+  RemeshRun run(mesh, 60, 10);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  const char* utf8 = "Terraind\xc3\xa6k";
+  for (vtkPolyData* output : { run.Filter->GetLabelsOutput(), run.Remesh() })
+  {
+    EXPECT_NE(output->GetPointData()->GetArray(utf8), nullptr);
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(output);
+    writer->WriteToOutputStringOn();
+    ASSERT_TRUE(writer->Write());
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->ReadFromInputStringOn();
+    reader->SetInputString(writer->GetOutputString());
+    reader->Update();
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), output->GetNumberOfPoints());
+    vtkDataArray* read = reader->GetOutput()->GetPointData()->GetArray(utf8);
+    ASSERT_NE(read, nullptr);
+    EXPECT_NEAR(read->GetRange()[0], 2.0, 1e-12); // interpolated at the remesh vertices
+    EXPECT_NEAR(read->GetRange()[1], 2.0, 1e-12);
+  }
+  EXPECT_EQ(mesh->GetPointData()->GetArray(0)->GetName(), std::string("Terraind\xe6k"));
 }
 
 TEST(RemeshFilter, BoxKeepsItsCornersAndEdges)
