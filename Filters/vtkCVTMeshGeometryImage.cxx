@@ -30,7 +30,8 @@ namespace
 {
 /// The mesh's point arrays at the pixels: each pixel interpolates the points of the triangle it
 /// samples (`triangles[sources.Triangle[p]]`, whose point ids `inputPoint` maps to the mesh's,
-/// or keeps as they are when empty); pixels without a triangle get zeros.
+/// or keeps as they are when empty); pixels without a triangle get zeros. Names come out in
+/// UTF-8 (MakeArrayNamesUtf8), for the XML writers.
 void CarryPointData(vtkPolyData* mesh, const std::vector<std::array<int, 3>>& triangles,
   const std::vector<int>& inputPoint, const cvt::PixelSources& sources, vtkImageData* output)
 {
@@ -69,6 +70,7 @@ void CarryPointData(vtkPolyData* mesh, const std::vector<std::array<int, 3>>& tr
     }
     carried->InterpolatePoint(in, p, corners, weights);
   }
+  cvtvtk::MakeArrayNamesUtf8(carried);
   for (int a = 0; a < carried->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* array = carried->GetAbstractArray(a);

@@ -829,6 +829,23 @@ TEST(MeshGeometryImage, PointArraysAreCarriedOntoThePixels)
   }
 }
 
+// A point array named in Latin-1 (as VTK's OBJ reader names texture coordinates after an OBJ's
+// materials) reaches the pixels under its UTF-8 name, as on the CPU engine's outputs: an XML
+// name is UTF-8, and the image written as it was could not be read back.
+TEST(MeshGeometryImage, ArrayNamesReachThePixelsInUtf8)
+{
+  vtkSmartPointer<vtkPolyData> mesh = SphereWithArrays(90.0);
+  mesh->GetPointData()->GetArray("step")->SetName("Terraind\xe6k");
+  vtkNew<vtkCVTMeshGeometryImage> gi;
+  gi->SetInputData(mesh);
+  gi->SetResolution(64, 64);
+  gi->Update();
+  vtkPointData* pd = gi->GetOutput()->GetPointData();
+  EXPECT_NE(pd->GetArray("Terraind\xc3\xa6k"), nullptr);
+  EXPECT_EQ(pd->GetArray("Terraind\xe6k"), nullptr);
+  EXPECT_NE(mesh->GetPointData()->GetArray("Terraind\xe6k"), nullptr); // the input keeps its own
+}
+
 // A density carried from the mesh draws the sites where it is larger, on both engines (sites
 // per area go as the square root of the density: about 3/4 of them where it is 10 times larger).
 TEST(SurfaceFilter, DensityArrayDrawsTheSitesWhereItIsLarger)
