@@ -311,67 +311,66 @@ std::vector<char> BorderVertices(const Remesh& remesh)
   return onBorder;
 }
 
-/// Moves free (not pinned) vertices of triangles with a corner under 30 degrees to the mean of
-/// their neighbours, projected onto the input surface, wherever that raises the smallest angle
-/// around them without turning a triangle over: cells cut by a crease leave a few thin
-/// triangles that no flip mends. With `search`, where the mean does not widen them enough,
-/// steps in the tangent plane are tried too (a pattern search). Returns the number of vertices
-/// moved.
-int RelaxThinTriangles(
-  Remesh& remesh, const std::vector<char>& pinned, const SurfaceProjector& projector, bool search)
+/// The smallest corner (radians) of vertex v's triangles (`around`: per vertex, its triangles)
+/// with v at `at`, in `smallest`; false if one of them turns by more than 45 degrees.
+bool SmallestCornerAround(const Remesh& remesh, const std::vector<std::vector<int>>& around, int v,
+  const double* at, double& smallest)
 {
-  const int vertices = static_cast<int>(remesh.SiteIds.size());
-  const std::vector<std::vector<int>> around = TrianglesAroundVertices(remesh);
-  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
-  const auto smallestAround = [&](int v, const double* at, double& smallest)
+  const auto point = [&remesh](int u) { return &remesh.Points[3 * static_cast<size_t>(u)]; };
+  smallest = 10.0;
+  for (int t : around[static_cast<size_t>(v)])
   {
-    // The smallest angle of v's triangles with v at `at`; false if one turns over.
-    smallest = 10.0;
-    for (int t : around[static_cast<size_t>(v)])
+    const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+    const double* p[3];
+    for (int k = 0; k < 3; ++k)
     {
-      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
-      const double* p[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        p[k] = tri[k] == v ? at : point(tri[k]);
-      }
-      double before[3], after[3];
-      UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), before);
-      UnitNormal(p[0], p[1], p[2], after);
-      if (Dot(before, after) < 0.7)
-      {
-        return false;
-      }
-      smallest = std::min(smallest, SmallestCorner(p[0], p[1], p[2]));
+      p[k] = tri[k] == v ? at : point(tri[k]);
     }
-    return true;
-  };
-  // A free vertex with a corner under `thin` at its current place (`current`: that corner).
-  const auto isThin = [&](int v, double& current)
-  {
-    return !pinned[static_cast<size_t>(v)] && !around[static_cast<size_t>(v)].empty() &&
-      smallestAround(v, point(v), current) && current < ThinCorner;
-  };
-  // v's triangles with v at `at`, for the projector's crease check.
-  const auto farthestCentroid = [&](int v, const double* at)
-  {
-    std::vector<std::array<const double*, 3>> corners;
-    for (int t : around[static_cast<size_t>(v)])
+    double before[3], after[3];
+    UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), before);
+    UnitNormal(p[0], p[1], p[2], after);
+    if (Dot(before, after) < 0.7)
     {
-      const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
-      corners.push_back({ tri[0] == v ? at : point(tri[0]), tri[1] == v ? at : point(tri[1]),
-        tri[2] == v ? at : point(tri[2]) });
+      return false;
     }
-    return projector.FarthestCentroid(corners);
-  };
-  // v at the surface point nearest to `target` if that widens its smallest angle (`current`)
-  // without turning a triangle over or moving its triangles farther than `reach` from the input.
-  const auto tryPlace = [&](int v, const double* target, double reach, double& current)
+    smallest = std::min(smallest, SmallestCorner(p[0], p[1], p[2]));
+  }
+  return true;
+}
+
+/// How far vertex v's triangles lie from the input with v at `at` (the projector's
+/// FarthestCentroid, which also checks creases).
+double FarthestCentroidAround(const Remesh& remesh, const std::vector<std::vector<int>>& around,
+  const SurfaceProjector& projector, int v, const double* at)
+{
+  const auto point = [&remesh](int u) { return &remesh.Points[3 * static_cast<size_t>(u)]; };
+  std::vector<std::array<const double*, 3>> corners;
+  for (int t : around[static_cast<size_t>(v)])
+  {
+    const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+    corners.push_back({ tri[0] == v ? at : point(tri[0]), tri[1] == v ? at : point(tri[1]),
+      tri[2] == v ? at : point(tri[2]) });
+  }
+  return projector.FarthestCentroid(corners);
+}
+
+/// Moves vertex v along the input surface where that widens the smallest corner of its
+/// triangles (`current`, kept up to date) without turning one over or moving them farther than
+/// `reach` from the input: first to the mean of its neighbours (Laplacian smoothing), then,
+/// with `search` and while the corner is under `wide`, by a pattern search in the tangent plane
+/// (steps of a quarter, an eighth and a sixteenth of the mean edge in eight directions, each
+/// taken while it widens). Returns whether v moved.
+bool WidenAround(Remesh& remesh, const std::vector<std::vector<int>>& around,
+  const SurfaceProjector& projector, int v, double reach, bool search, double wide, double& current)
+{
+  const auto point = [&remesh](int u) { return &remesh.Points[3 * static_cast<size_t>(u)]; };
+  // v at the surface point nearest to `target` if that widens its smallest angle.
+  const auto tryPlace = [&](const double* target)
   {
     double q[3], weights[3], after = 0.0;
     const int triangle = projector.Nearest(target, q, weights);
-    if (triangle < 0 || !smallestAround(v, q, after) || after <= current + 1e-6 ||
-      farthestCentroid(v, q) > reach)
+    if (triangle < 0 || !SmallestCornerAround(remesh, around, v, q, after) ||
+      after <= current + 1e-6 || FarthestCentroidAround(remesh, around, projector, v, q) > reach)
     {
       return false;
     }
@@ -381,6 +380,71 @@ int RelaxThinTriangles(
     current = after;
     return true;
   };
+  double mean[3] = { 0.0, 0.0, 0.0 }, normal[3] = { 0.0, 0.0, 0.0 }, edge = 0.0;
+  int count = 0;
+  for (int t : around[static_cast<size_t>(v)])
+  {
+    const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
+    double n[3];
+    UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), n);
+    for (int u : tri)
+    {
+      if (u != v)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          mean[k] += point(u)[k];
+        }
+        edge += std::sqrt(Distance2(point(u), point(v)));
+        ++count;
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      normal[k] += n[k];
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    mean[k] /= count;
+  }
+  edge /= count;
+  bool changed = tryPlace(mean);
+  double tangent[2][3];
+  if (search && current < wide && TangentBasis(normal, tangent[0], tangent[1]))
+  {
+    for (double step = 0.25 * edge; step > 0.05 * edge; step /= 2.0)
+    {
+      for (int direction = 0, failed = 0; failed < 8 && current < wide;
+           direction = (direction + 1) % 8)
+      {
+        const double angle = direction * 3.14159265358979323846 / 4.0;
+        double target[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          target[k] = point(v)[k] +
+            step * (std::cos(angle) * tangent[0][k] + std::sin(angle) * tangent[1][k]);
+        }
+        const bool widened = tryPlace(target);
+        failed = widened ? 0 : failed + 1;
+        changed = changed || widened;
+      }
+    }
+  }
+  return changed;
+}
+
+/// Moves free (not pinned) vertices of triangles with a corner under 30 degrees to the mean of
+/// their neighbours, projected onto the input surface, wherever that raises the smallest angle
+/// around them without turning a triangle over: cells cut by a crease leave a few thin
+/// triangles that no flip mends. With `search`, where the mean does not widen them enough,
+/// steps in the tangent plane are tried too (a pattern search: WidenAround). Returns the number
+/// of vertices moved.
+int RelaxThinTriangles(
+  Remesh& remesh, const std::vector<char>& pinned, const SurfaceProjector& projector, bool search)
+{
+  const int vertices = static_cast<int>(remesh.SiteIds.size());
+  const std::vector<std::vector<int>> around = TrianglesAroundVertices(remesh);
   int moved = 0;
   for (int round = 0; round < 3; ++round)
   {
@@ -388,66 +452,19 @@ int RelaxThinTriangles(
     for (int v = 0; v < vertices; ++v)
     {
       double current = 0.0;
-      if (!isThin(v, current))
+      if (pinned[static_cast<size_t>(v)] || around[static_cast<size_t>(v)].empty() ||
+        !SmallestCornerAround(
+          remesh, around, v, &remesh.Points[3 * static_cast<size_t>(v)], current) ||
+        current >= ThinCorner)
       {
         continue;
       }
-      const double reach = 1.1 * farthestCentroid(v, point(v)) + 1e-12;
-      // First the mean of its neighbours (Laplacian smoothing), then, where that is not wide
-      // enough, a pattern search in the tangent plane: steps of a quarter, an eighth and a
-      // sixteenth of the mean edge in eight directions, each taken while it widens.
-      double mean[3] = { 0.0, 0.0, 0.0 }, normal[3] = { 0.0, 0.0, 0.0 }, edge = 0.0;
-      int count = 0;
-      for (int t : around[static_cast<size_t>(v)])
-      {
-        const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
-        double n[3];
-        UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), n);
-        for (int u : tri)
-        {
-          if (u != v)
-          {
-            for (int k = 0; k < 3; ++k)
-            {
-              mean[k] += point(u)[k];
-            }
-            edge += std::sqrt(Distance2(point(u), point(v)));
-            ++count;
-          }
-        }
-        for (int k = 0; k < 3; ++k)
-        {
-          normal[k] += n[k];
-        }
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        mean[k] /= count;
-      }
-      edge /= count;
-      bool changed = tryPlace(v, mean, reach, current);
-      double tangent[2][3];
-      if (search && current < ThinCorner && TangentBasis(normal, tangent[0], tangent[1]))
-      {
-        for (double step = 0.25 * edge; step > 0.05 * edge; step /= 2.0)
-        {
-          for (int direction = 0, failed = 0; failed < 8 && current < ThinCorner;
-               direction = (direction + 1) % 8)
-          {
-            const double angle = direction * 3.14159265358979323846 / 4.0;
-            double target[3];
-            for (int k = 0; k < 3; ++k)
-            {
-              target[k] = point(v)[k] +
-                step * (std::cos(angle) * tangent[0][k] + std::sin(angle) * tangent[1][k]);
-            }
-            const bool widened = tryPlace(v, target, reach, current);
-            failed = widened ? 0 : failed + 1;
-            changed = changed || widened;
-          }
-        }
-      }
-      movedThisRound += changed ? 1 : 0;
+      const double reach = 1.1 *
+          FarthestCentroidAround(
+            remesh, around, projector, v, &remesh.Points[3 * static_cast<size_t>(v)]) +
+        1e-12;
+      movedThisRound +=
+        WidenAround(remesh, around, projector, v, reach, search, ThinCorner, current) ? 1 : 0;
     }
     moved += movedThisRound;
     if (movedThisRound == 0)
