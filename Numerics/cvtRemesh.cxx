@@ -1068,9 +1068,10 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
 /// from it, the nearer end (else the other) moves along the border onto that point where its
 /// triangles keep their side, their corners (FitCorner, or what they had) and their distance
 /// from the input and its border edges cut less of the loop off; else the edge is split there
-/// where the two new triangles keep their corners at FitCorner, turn by less than 60 degrees from
-/// the one they replace and lie no farther from the input. Changed edges are looked at again. The
-/// new vertices are pinned, on input points. Returns the number of vertices added.
+/// where the two new triangles turn by less than 60 degrees from the one they replace, lie no
+/// farther from the input and keep their corners at FitCorner, if need be with the triangle's
+/// apex, when free, moved along the surface to widen them (WidenAround). Changed edges are looked
+/// at again. The new vertices are pinned, on input points. Returns the number of vertices added.
 int FollowInputBorder(
   Remesh& remesh, std::vector<char>& pinned, const RemeshInput& input, double tolerance)
 {
@@ -1349,22 +1350,35 @@ int FollowInputBorder(
     UnitNormal(point(a), point(b), pointC, before);
     UnitNormal(point(a), m, pointC, first);
     UnitNormal(m, point(b), pointC, second);
-    if (SmallestCorner(point(a), m, pointC) < FitCorner ||
-      SmallestCorner(m, point(b), pointC) < FitCorner || Dot(before, first) < 0.5 ||
-      Dot(before, second) < 0.5 ||
+    if (Dot(before, first) < 0.5 || Dot(before, second) < 0.5 ||
       input.Projector.FarthestCentroid({ { point(a), m, pointC }, { m, point(b), pointC } }) >
         std::max(input.Projector.FarthestCentroid({ { point(a), point(b), pointC } }), tolerance))
     {
       continue;
     }
+    // A corner far from the edge's middle leaves a thin triangle: then the apex c, when free,
+    // may move along the surface to widen its triangles (a sawtooth border's teeth are often
+    // closer to one end of the edge than the cells are wide).
+    const bool wide = SmallestCorner(point(a), m, pointC) >= FitCorner &&
+      SmallestCorner(m, point(b), pointC) >= FitCorner;
+    const bool apexFree = !pinned[static_cast<size_t>(c)] &&
+      !(static_cast<size_t>(c) < onBorder.size() && onBorder[static_cast<size_t>(c)]);
+    if (!wide && !apexFree)
+    {
+      continue;
+    }
+    // The apex's place, kept (pointC is lost when the points grow) to undo a widening.
+    const std::array<double, 3> apexAt{ pointC[0], pointC[1], pointC[2] };
+    const int apexTriangle = remesh.SourceTriangles[static_cast<size_t>(c)];
+    const std::array<double, 3> apexWeights{ remesh.SourceBarycentric[3 * static_cast<size_t>(c)],
+      remesh.SourceBarycentric[3 * static_cast<size_t>(c) + 1],
+      remesh.SourceBarycentric[3 * static_cast<size_t>(c) + 2] };
     const int n = static_cast<int>(remesh.SiteIds.size());
     remesh.Points.insert(remesh.Points.end(), m, m + 3);
     remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
     remesh.SourceTriangles.push_back(-1);
     remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), 3, 0.0);
     setSource(static_cast<size_t>(n), far);
-    pinned.push_back(1);
-    places.push_back(placeOfPoint(far));
     std::array<int, 3> firstTriangle = tri, secondTriangle = tri;
     firstTriangle[static_cast<size_t>((k + 1) % 3)] = n; // a m c
     secondTriangle[static_cast<size_t>(k)] = n;          // m b c
@@ -1376,6 +1390,47 @@ int FollowInputBorder(
     aroundB.push_back(added);
     around[static_cast<size_t>(c)].push_back(added);
     around.push_back({ t, added });
+    if (!wide)
+    {
+      // How far the apex's triangles may lie from the input once widened: as far as the split
+      // left them, or the tolerance.
+      double current = 0.0;
+      const double reach =
+        std::max(FarthestCentroidAround(remesh, around, input.Projector, c, point(c)), tolerance);
+      if (SmallestCornerAround(remesh, around, c, point(c), current))
+      {
+        WidenAround(remesh, around, input.Projector, c, reach, true, FitCorner, current);
+      }
+      if (current < FitCorner)
+      {
+        // Undone: the apex back, the two triangles one again, the new vertex gone.
+        std::copy(apexAt.begin(), apexAt.end(), point(c));
+        remesh.SourceTriangles[static_cast<size_t>(c)] = apexTriangle;
+        std::copy(apexWeights.begin(), apexWeights.end(),
+          &remesh.SourceBarycentric[3 * static_cast<size_t>(c)]);
+        around.pop_back();
+        around[static_cast<size_t>(c)].pop_back();
+        aroundB.pop_back();
+        aroundB.push_back(t);
+        remesh.Triangles.pop_back();
+        remesh.Triangles[static_cast<size_t>(t)] = tri;
+        remesh.Points.resize(3 * static_cast<size_t>(n));
+        remesh.SiteIds.pop_back();
+        remesh.SourceTriangles.pop_back();
+        remesh.SourceBarycentric.resize(3 * static_cast<size_t>(n));
+        continue;
+      }
+      // The apex's other triangles changed: their border edges are looked at again.
+      for (int u : around[static_cast<size_t>(c)])
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          work.emplace_back(u, j);
+        }
+      }
+    }
+    pinned.push_back(1);
+    places.push_back(placeOfPoint(far));
     work.emplace_back(t, k);
     work.emplace_back(added, k);
     ++splits;

@@ -92,7 +92,8 @@ struct CVTNUMERICS_EXPORT RemeshInput
 /// them), where that brings them closer without a corner under 27 degrees.
 /// Border edges whose input boundary between their ends lies farther than that from them get an end
 /// moved along the border onto its farthest point (a corner of the input's border) where that cuts
-/// less of it off, else are split there, while the triangles keep corners of 27 degrees. Edges
+/// less of it off, else are split there (the edge's free apex moving to widen the two triangles
+/// where need be), while the triangles keep corners of 27 degrees. Edges
 /// between free vertices are then collapsed where that brings the valences round them closer to 6
 /// (two valence-5 vertices with 7s across their edge: a vertex fewer), keeping corners of 30
 /// degrees and the remesh as close to the input, and the valence flips run again. Last,
