@@ -2,6 +2,7 @@
 
 #include "cvtEdgeTable.h"
 #include "cvtGeometry.h"
+#include "cvtPointCloud.h"
 #include "cvtSampling.h"
 #include "cvtUnionFind.h"
 
@@ -51,8 +52,8 @@ double SignedVolume(const SurfaceMesh& mesh, const std::vector<int>& triangles)
 
 bool MeshRepairReport::Changed() const
 {
-  return this->DegenerateTriangles + this->DuplicateTriangles + this->SplitEdges +
-    this->SplitPoints + this->FlippedTriangles + this->UnusedPoints >
+  return this->DegenerateTriangles + this->JoinedAtLines + this->DuplicateTriangles +
+    this->SplitEdges + this->SplitPoints + this->FlippedTriangles + this->UnusedPoints >
     0;
 }
 
@@ -69,6 +70,7 @@ std::string MeshRepairReport::Summary() const
     }
   };
   item(this->DegenerateTriangles, "dropped degenerate triangles:");
+  item(this->JoinedAtLines, "triangles added to join the mesh where degenerate ones did:");
   item(this->DuplicateTriangles, "dropped duplicate triangles:");
   item(this->SplitEdges, "split non-manifold edges:");
   item(this->SplitPoints, "split non-manifold points:");
@@ -430,6 +432,94 @@ std::vector<int> SplitPinchedPoints(int numberOfPoints, std::vector<std::array<i
   return copied;
 }
 
+namespace
+{
+/// Where zero-area triangles with three distinct points (on one line) were dropped, the
+/// triangles round them keep border edges that run along that line past the dropped ones' other
+/// points: T-junctions, which cut the surface apart where the input's triangles joined it
+/// (CGAL's degtri_sliding: two parts and two boundary loops, not one and one). Each such border
+/// edge (both ends among `linePoints`) is split at the `linePoints` lying inside it (off its
+/// line by at most a billionth of its length), its triangle into a fan; the pieces then share
+/// their edges with the triangles across. Returns the number of triangles added.
+int SplitAtLinePoints(const SurfaceMesh& mesh, const std::vector<int>& linePoints,
+  std::vector<std::array<int, 3>>& triangles)
+{
+  std::vector<char> onLine(static_cast<size_t>(mesh.NumberOfPoints()), 0);
+  std::vector<double> coordinates;
+  for (int p : linePoints)
+  {
+    onLine[p] = 1;
+    coordinates.insert(coordinates.end(), mesh.Point(p), mesh.Point(p) + 3);
+  }
+  PointCloud<3> cloud{ &coordinates };
+  PointTree<3> tree(3, cloud);
+  tree.buildIndex();
+  int added = 0;
+  // A pass splits one edge per triangle; the others are split in later passes (a few: each
+  // splits a border edge at every point inside it).
+  for (bool split = true; split && added < 3 * static_cast<int>(linePoints.size());)
+  {
+    split = false;
+    const EdgeTable edges(triangles);
+    const size_t count = triangles.size();
+    for (size_t t = 0; t < count; ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::array<int, 3> tri = triangles[t];
+        const int a = tri[k], c = tri[(k + 1) % 3], z = tri[(k + 2) % 3];
+        if (!onLine[a] || !onLine[c] || edges.At(static_cast<int>(t), k).size() != 1)
+        {
+          continue;
+        }
+        const double* pa = mesh.Point(a);
+        const double* pc = mesh.Point(c);
+        const double ac[3] = { pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2] };
+        const double length2 = Dot(ac, ac);
+        const double middle[3] = { 0.5 * (pa[0] + pc[0]), 0.5 * (pa[1] + pc[1]),
+          0.5 * (pa[2] + pc[2]) };
+        std::vector<std::pair<std::uint32_t, double>> near;
+        tree.radiusSearch(middle, 0.25 * length2 * (1.0 + 1e-9), near, nanoflann::SearchParams());
+        std::vector<std::pair<double, int>> inside; // (where along a -> c, point)
+        for (const auto& found : near)
+        {
+          const int p = linePoints[found.first];
+          const double* pp = mesh.Point(p);
+          const double ap[3] = { pp[0] - pa[0], pp[1] - pa[1], pp[2] - pa[2] };
+          double off[3];
+          Cross(ac, ap, off);
+          const double along = Dot(ac, ap) / length2;
+          if (p != a && p != c && along > 0.0 && along < 1.0 &&
+            Dot(off, off) <= 1e-18 * length2 * length2)
+          {
+            inside.emplace_back(along, p);
+          }
+        }
+        if (inside.empty())
+        {
+          continue;
+        }
+        std::sort(inside.begin(), inside.end());
+        inside.erase(std::unique(inside.begin(), inside.end(),
+                       [](const auto& x, const auto& y) { return x.second == y.second; }),
+          inside.end());
+        int from = a;
+        for (const auto& [along, p] : inside)
+        {
+          triangles.push_back({ from, p, z });
+          from = p;
+        }
+        triangles[t] = { from, c, z };
+        added += static_cast<int>(inside.size());
+        split = true;
+        break; // the triangle's other edges: in the next pass
+      }
+    }
+  }
+  return added;
+}
+} // namespace
+
 std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
 {
   report = MeshRepairReport();
@@ -443,14 +533,19 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
     std::vector<std::pair<std::array<int, 3>, int>> sorted;
     sorted.reserve(mesh.Triangles.size());
     std::vector<char> keep(mesh.Triangles.size(), 1);
+    std::vector<int> linePoints; // of zero-area triangles with three distinct points
     for (size_t t = 0; t < mesh.Triangles.size(); ++t)
     {
       const auto& tri = mesh.Triangles[t];
-      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] ||
-        !(TriangleArea(mesh, tri) > 0.0))
+      const bool distinct = tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0];
+      if (!distinct || !(TriangleArea(mesh, tri) > 0.0))
       {
         ++report.DegenerateTriangles;
         keep[t] = 0;
+        if (distinct)
+        {
+          linePoints.insert(linePoints.end(), tri.begin(), tri.end());
+        }
         continue;
       }
       std::array<int, 3> key = tri;
@@ -476,6 +571,12 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
       }
     }
     mesh.Triangles.swap(kept);
+    std::sort(linePoints.begin(), linePoints.end());
+    linePoints.erase(std::unique(linePoints.begin(), linePoints.end()), linePoints.end());
+    if (!linePoints.empty() && !mesh.Triangles.empty())
+    {
+      report.JoinedAtLines = SplitAtLinePoints(mesh, linePoints, mesh.Triangles);
+    }
   }
   if (mesh.Triangles.empty())
   {

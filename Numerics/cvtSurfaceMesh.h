@@ -33,6 +33,7 @@ struct SurfaceMesh
 struct MeshRepairReport
 {
   int DegenerateTriangles = 0; // zero area or a repeated point: dropped
+  int JoinedAtLines = 0;       // added splitting the triangles that degenerate ones joined
   int DuplicateTriangles = 0;  // same three points as another: dropped
   int SplitEdges = 0;          // edges of more than two triangles, the extra ones detached
   int SplitPoints = 0;         // non-manifold points made into one point per fan
@@ -43,7 +44,8 @@ struct MeshRepairReport
   std::string Summary() const;
 };
 
-/// Prepares a mesh for remeshing: drops degenerate and duplicate triangles and unused points,
+/// Prepares a mesh for remeshing: drops degenerate and duplicate triangles and unused points
+/// (where zero-area triangles joined others along a line, those are split to join there),
 /// splits non-manifold edges (the triangles beyond an agreeing pair get their own copies of the
 /// edge's points) and points (one copy per fan of triangles), orients every connected component
 /// consistently (closed ones outwards). Returns "" or what makes the mesh unusable: a

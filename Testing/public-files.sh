@@ -77,16 +77,21 @@ while IFS= read -r file; do
   fi
 done < <(find . -type f \( -iname '*.obj' -o -iname '*.ply' -o -iname '*.stl' -o -iname '*.off' \) | sort)
 # The building at 1000 sites: its walls keep the topology out of reach however many sites the
-# rounds add; the remesh stays near the size asked for, with corners of 25 degrees or more
-# (before the bound on added sites: 21703 added, 41253 vertices, corners of 0 degrees).
+# rounds add; the remesh stays near the size asked for, with corners of 23 degrees or more
+# (before the bound on added sites: 21703 added, 41253 vertices, corners of 0 degrees; 25.9
+# degrees before its zero-area triangles' T-junctions were joined, 23.6 after: two sheets of a
+# wall far thinner than the cells meet there). L-BFGS runs on where it stalls with the gradient
+# still large (it stopped after 6 of 100 iterations, and left a corner of 13.5 degrees).
 if [ -f OBJ/regr01.obj ]; then
   remesh OBJ/regr01.obj 1000 "$T/regr01-1000" > "$T/regr01-1000.log" 2>&1
   added=$(sed -n 's/^  sites added for topology *\([0-9]*\).*/\1/p' "$T/regr01-1000.log")
   smallest=$(sed -n 's/^  smallest \/ largest angle *\([0-9.]*\).*/\1/p' "$T/regr01-1000.log")
-  echo "OBJ/regr01.obj at 1000 sites: ${added:-?} sites added for topology, smallest angle ${smallest:-?}"
-  if [ -z "$added" ] || [ "$added" -gt 2000 ] || [ -z "$smallest" ] ||
-    awk -v a="$smallest" 'BEGIN { exit !(a < 25) }'; then
-    echo "  more than 2000 sites added, or a corner under 25 degrees"; tail -5 "$T/regr01-1000.log"; bad=1
+  iterations=$(sed -n 's/^  iterations \/ evaluations *\([0-9]*\).*/\1/p' "$T/regr01-1000.log")
+  echo "OBJ/regr01.obj at 1000 sites: ${iterations:-?} iterations, ${added:-?} sites added for topology, smallest angle ${smallest:-?}"
+  if [ -z "$added" ] || [ "$added" -gt 2000 ] || [ -z "$smallest" ] || [ -z "$iterations" ] ||
+    [ "$iterations" -lt 50 ] || awk -v a="$smallest" 'BEGIN { exit !(a < 23) }'; then
+    echo "  more than 2000 sites added, fewer than 50 iterations or a corner under 23 degrees"
+    tail -5 "$T/regr01-1000.log"; bad=1
   fi
 fi
 # The same file gives the same remesh every time: VTK 9.1's threaded point merge (TBB) kept

@@ -41,6 +41,11 @@ public:
       sums.MomentX[i] = this->Targets[2 * i] - this->Sites[2 * i];
       sums.MomentY[i] = this->Targets[2 * i + 1] - this->Sites[2 * i + 1];
       sums.Energy[i] = sums.MomentX[i] * sums.MomentX[i] + sums.MomentY[i] * sums.MomentY[i];
+      if (this->Evaluations == this->LieAt) // the gradient points the wrong way, once
+      {
+        sums.MomentX[i] = -sums.MomentX[i];
+        sums.MomentY[i] = -sums.MomentY[i];
+      }
     }
     return true;
   }
@@ -59,7 +64,7 @@ public:
 
   std::vector<double> Targets, Sites;
   int Evaluations = 0, Steps = 0;
-  int FailAt = -1, WanderFrom = 1000;
+  int FailAt = -1, WanderFrom = 1000, LieAt = -1;
 };
 
 const std::vector<double> Targets = { 0.2, 0.3, -0.5, 0.7, 0.9, -0.1 };
@@ -142,6 +147,27 @@ TEST(Optimizer, LBFGSWarmsUpWithLloydThenConverges)
   EXPECT_EQ(result.History[2].Iteration, 2);
   EXPECT_NEAR(result.History[2].Energy, result.History[0].Energy / 16.0, 1e-12);
   EXPECT_EQ(calls, static_cast<int>(result.History.size()));
+  for (size_t k = 0; k < Targets.size(); ++k)
+  {
+    EXPECT_NEAR(result.Sites[k], Targets[k], 1e-6);
+  }
+}
+
+TEST(Optimizer, LBFGSStartsAgainWhereItStallsFarFromConvergence)
+{
+  // One evaluation's gradient points uphill: L-BFGS's next direction climbs and its line search
+  // fails with the gradient far from converged (a stall, as where cells jump across thin walls).
+  // It starts again from the best sites with its memory cleared, and converges.
+  PullProblem problem(Targets);
+  problem.LieAt = 2;
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = 50;
+  options.GradientTolerance = 1e-6;
+  options.LloydWarmUpIterations = 0;
+  cvt::OptimizerResult result;
+  std::string error;
+  ASSERT_TRUE(cvt::RunLBFGS(problem, Start, options, nullptr, result, error)) << error;
+  EXPECT_EQ(result.StopReason, "gradient tolerance reached");
   for (size_t k = 0; k < Targets.size(); ++k)
   {
     EXPECT_NEAR(result.Sites[k], Targets[k], 1e-6);

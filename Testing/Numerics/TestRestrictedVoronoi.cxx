@@ -1696,6 +1696,29 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
   EXPECT_EQ(square.BoundaryLoops, 1);
   EXPECT_EQ(square.EulerCharacteristic, 1);
 
+  // Two triangles below a line and two above, joined by four zero-area triangles along it
+  // (CGAL's degtri_sliding): their edges on the line end at different points (T-junctions).
+  // Dropping the degenerate ones alone left two parts; the edges are split where the others'
+  // points lie on them, so the four join as in the input: one disk.
+  cvt::SurfaceMesh sliding;
+  sliding.Points = { 4, -2, 0, 6, 0, 0, 4, 0, 0, 2, 0, 0, 1, 0, 0, 3, 0, 0, 5, 0, 0, 3, 2, 0 };
+  sliding.Triangles = { { 0, 1, 2 }, { 0, 2, 3 }, { 3, 2, 4 }, { 2, 1, 6 }, { 2, 6, 4 },
+    { 4, 6, 5 }, { 5, 6, 7 }, { 4, 5, 7 } };
+  EXPECT_EQ(cvt::RepairSurfaceMesh(sliding, report), "");
+  EXPECT_EQ(report.DegenerateTriangles, 4);
+  EXPECT_EQ(report.JoinedAtLines, 4);
+  const cvt::MeshTopology disk =
+    cvt::ComputeMeshTopology(sliding.NumberOfPoints(), sliding.Triangles);
+  EXPECT_EQ(disk.Components, 1);
+  EXPECT_EQ(disk.BoundaryLoops, 1);
+  EXPECT_EQ(disk.EulerCharacteristic, 1);
+  double area = 0.0;
+  for (const auto& triangle : sliding.Triangles)
+  {
+    area += cvt::TriangleArea(sliding, triangle);
+  }
+  EXPECT_DOUBLE_EQ(area, 8.0); // the four triangles' area, none overlapping
+
   // Two squares sharing one corner point: the point is split, one copy per fan.
   cvt::SurfaceMesh bowtie;
   bowtie.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0 };
