@@ -69,6 +69,16 @@ public:
 
 const std::vector<double> Targets = { 0.2, 0.3, -0.5, 0.7, 0.9, -0.1 };
 const cvt::SiteState Start{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }, {} }; // all in one place
+
+/// Options for L-BFGS runs of the toy problem to convergence, after `warmUp` Lloyd iterations.
+cvt::OptimizerOptions ConvergingOptions(int warmUp)
+{
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = 50;
+  options.GradientTolerance = 1e-6;
+  options.LloydWarmUpIterations = warmUp;
+  return options;
+}
 }
 
 TEST(Optimizer, LloydRecordsEveryIterationAndStopsOnTolerance)
@@ -130,10 +140,7 @@ TEST(Optimizer, AFailureEndsTheRunWithTheProblemsMessage)
 TEST(Optimizer, LBFGSWarmsUpWithLloydThenConverges)
 {
   PullProblem problem(Targets);
-  cvt::OptimizerOptions options;
-  options.MaximumNumberOfIterations = 50;
-  options.GradientTolerance = 1e-6;
-  options.LloydWarmUpIterations = 2;
+  const cvt::OptimizerOptions options = ConvergingOptions(2);
   cvt::OptimizerResult result;
   std::string error;
   int calls = 0;
@@ -160,10 +167,7 @@ TEST(Optimizer, LBFGSStartsAgainWhereItStallsFarFromConvergence)
   // It starts again from the best sites with its memory cleared, and converges.
   PullProblem problem(Targets);
   problem.LieAt = 2;
-  cvt::OptimizerOptions options;
-  options.MaximumNumberOfIterations = 50;
-  options.GradientTolerance = 1e-6;
-  options.LloydWarmUpIterations = 0;
+  const cvt::OptimizerOptions options = ConvergingOptions(0);
   cvt::OptimizerResult result;
   std::string error;
   ASSERT_TRUE(cvt::RunLBFGS(problem, Start, options, nullptr, result, error)) << error;
