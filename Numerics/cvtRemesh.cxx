@@ -1385,9 +1385,11 @@ int FollowInputBorder(
     remesh.Triangles[static_cast<size_t>(t)] = firstTriangle;
     remesh.Triangles.push_back(secondTriangle);
     const int added = static_cast<int>(remesh.Triangles.size()) - 1;
-    auto& aroundB = around[static_cast<size_t>(b)];
-    aroundB.erase(std::find(aroundB.begin(), aroundB.end(), t));
-    aroundB.push_back(added);
+    {
+      auto& aroundB = around[static_cast<size_t>(b)]; // not kept: around grows below
+      aroundB.erase(std::find(aroundB.begin(), aroundB.end(), t));
+      aroundB.push_back(added);
+    }
     around[static_cast<size_t>(c)].push_back(added);
     around.push_back({ t, added });
     if (!wide)
@@ -1410,8 +1412,7 @@ int FollowInputBorder(
           &remesh.SourceBarycentric[3 * static_cast<size_t>(c)]);
         around.pop_back();
         around[static_cast<size_t>(c)].pop_back();
-        aroundB.pop_back();
-        aroundB.push_back(t);
+        around[static_cast<size_t>(b)].back() = t; // was `added`
         remesh.Triangles.pop_back();
         remesh.Triangles[static_cast<size_t>(t)] = tri;
         remesh.Points.resize(3 * static_cast<size_t>(n));
