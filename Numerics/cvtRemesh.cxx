@@ -2118,53 +2118,65 @@ std::vector<std::array<int, 3>> TriangulateHole(
 /// Vertices at the same place (the copies of a split pinched vertex, parts of one cell pinned
 /// to the same corner) would be merged again by any point-merging filter downstream (VTK's
 /// cleaning), undoing the split: each is moved a tenth of the way to the centroid of its own
-/// triangles. Returns the number of vertices moved.
+/// triangles. Copies whose rings were themselves coincident copies (a pinch along a line, as on
+/// the two sheets of a wall far thinner than the cells: assimp's regr01.obj) land on one place
+/// again; they move again from there, in up to three rounds. Returns the number of vertices moved.
 int SeparateCoincidentVertices(Remesh& remesh)
 {
   const size_t vertices = remesh.SiteIds.size();
-  std::vector<double> ringSum(3 * vertices, 0.0);
-  std::vector<int> ringCount(vertices, 0);
-  for (const auto& t : remesh.Triangles)
+  std::vector<char> moved(vertices, 0);
+  for (int round = 0; round < 3; ++round)
   {
-    for (int k = 0; k < 3; ++k)
+    std::vector<double> ringSum(3 * vertices, 0.0);
+    std::vector<int> ringCount(vertices, 0);
+    for (const auto& t : remesh.Triangles)
     {
-      const size_t v = static_cast<size_t>(t[k]);
-      for (int j = 1; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+      {
+        const size_t v = static_cast<size_t>(t[k]);
+        for (int j = 1; j < 3; ++j)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            ringSum[3 * v + c] += remesh.Points[3 * static_cast<size_t>(t[(k + j) % 3]) + c];
+          }
+        }
+        ringCount[v] += 2;
+      }
+    }
+    std::map<std::array<double, 3>, std::vector<size_t>> at;
+    for (size_t v = 0; v < vertices; ++v)
+    {
+      if (ringCount[v] > 0)
+      {
+        at[{ remesh.Points[3 * v], remesh.Points[3 * v + 1], remesh.Points[3 * v + 2] }].push_back(
+          v);
+      }
+    }
+    bool any = false;
+    for (const auto& place : at)
+    {
+      if (place.second.size() < 2)
+      {
+        continue;
+      }
+      for (size_t v : place.second)
       {
         for (int c = 0; c < 3; ++c)
         {
-          ringSum[3 * v + c] += remesh.Points[3 * static_cast<size_t>(t[(k + j) % 3]) + c];
+          double& x = remesh.Points[3 * v + c];
+          x += 0.1 * (ringSum[3 * v + c] / ringCount[v] - x);
         }
+        moved[v] = 1;
       }
-      ringCount[v] += 2;
+      any = true;
+    }
+    if (!any)
+    {
+      break;
     }
   }
-  std::map<std::array<double, 3>, std::vector<size_t>> at;
-  for (size_t v = 0; v < vertices; ++v)
-  {
-    if (ringCount[v] > 0)
-    {
-      at[{ remesh.Points[3 * v], remesh.Points[3 * v + 1], remesh.Points[3 * v + 2] }].push_back(v);
-    }
-  }
-  int moved = 0;
-  for (const auto& place : at)
-  {
-    if (place.second.size() < 2)
-    {
-      continue;
-    }
-    for (size_t v : place.second)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        double& x = remesh.Points[3 * v + c];
-        x += 0.1 * (ringSum[3 * v + c] / ringCount[v] - x);
-      }
-      ++moved;
-    }
-  }
-  return moved;
+  return static_cast<int>(std::count(moved.begin(), moved.end(), 1));
 }
 
 /// Drops the pieces (joined by edges) of at most MaximumFragment triangles whose part of the
