@@ -499,10 +499,7 @@ int SplitAtLinePoints(const SurfaceMesh& mesh, const std::vector<int>& linePoint
         {
           continue;
         }
-        std::sort(inside.begin(), inside.end());
-        inside.erase(std::unique(inside.begin(), inside.end(),
-                       [](const auto& x, const auto& y) { return x.second == y.second; }),
-          inside.end());
+        std::sort(inside.begin(), inside.end()); // each point once: linePoints are distinct
         int from = a;
         for (const auto& [along, p] : inside)
         {
