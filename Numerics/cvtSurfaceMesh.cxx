@@ -35,14 +35,27 @@ std::string Where(const SurfaceMesh& mesh, int point)
   return text.str();
 }
 
+/// The volume a closed surface encloses, positive when it faces outwards: the sum of the
+/// tetrahedra from a point of its own to its triangles (from the origin, a mesh far from it,
+/// as in georeferenced coordinates, sums terms far larger than the volume, which cancel
+/// to rounding noise of either sign).
 double SignedVolume(const SurfaceMesh& mesh, const std::vector<int>& triangles)
 {
+  if (triangles.empty())
+  {
+    return 0.0;
+  }
+  const double* origin = mesh.Point(mesh.Triangles[triangles.front()][0]);
   double volume = 0.0;
   for (int t : triangles)
   {
-    const double* a = mesh.Point(mesh.Triangles[t][0]);
-    const double* b = mesh.Point(mesh.Triangles[t][1]);
-    const double* c = mesh.Point(mesh.Triangles[t][2]);
+    double a[3], b[3], c[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] = mesh.Point(mesh.Triangles[t][0])[k] - origin[k];
+      b[k] = mesh.Point(mesh.Triangles[t][1])[k] - origin[k];
+      c[k] = mesh.Point(mesh.Triangles[t][2])[k] - origin[k];
+    }
     volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
       a[2] * (b[0] * c[1] - b[1] * c[0]);
   }

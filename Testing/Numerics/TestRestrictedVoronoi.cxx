@@ -1761,6 +1761,23 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
   EXPECT_LE(sheets.Components, 2);
   EXPECT_EQ(sheets.Genus, 0);
 
+  // A closed sphere far from the origin (georeferenced coordinates), facing outwards: left as it
+  // is. Its volume summed from the origin was rounding noise of either sign (an elephant 1e6
+  // away had all its triangles turned inwards).
+  cvt::SurfaceMesh far = Sphere(3);
+  for (size_t i = 0; i < far.Points.size(); ++i)
+  {
+    far.Points[i] += i % 3 == 0 ? 1e8 : -3e7;
+  }
+  EXPECT_EQ(cvt::RepairSurfaceMesh(far, report), "");
+  EXPECT_EQ(report.FlippedTriangles, 0);
+  for (auto& triangle : far.Triangles)
+  {
+    std::swap(triangle[1], triangle[2]); // facing inwards
+  }
+  EXPECT_EQ(cvt::RepairSurfaceMesh(far, report), "");
+  EXPECT_EQ(report.FlippedTriangles, far.NumberOfTriangles());
+
   // A Moebius strip.
   cvt::SurfaceMesh strip;
   const int n = 12;
