@@ -245,14 +245,18 @@ public:
   int RestartsLeft = 0; // of L-BFGS after a stall (none for Lloyd)
 };
 
-/// The energy seen by LBFGS++, in solver coordinates (x - center) / scale.
+/// The energy seen by LBFGS++, in solver coordinates (x - center) / scale and in units of
+/// `energyUnit`. LBFGS++ has absolute thresholds (a correction pair is kept where s'y > 1e-16
+/// y'y), so it sees an energy of about 1 whatever the input's size; the unit is a power of two,
+/// so the solver's steps are, to the bit, those it would take in the energy's own units.
 class Objective
 {
 public:
-  Objective(Run& run, const double center[3], double scale)
+  Objective(Run& run, const double center[3], double scale, double energyUnit)
     : Run_(run)
     , Dimension(run.Problem_.Dimension())
     , Scale(scale)
+    , EnergyUnit(energyUnit)
   {
     std::copy(center, center + 3, this->Center);
   }
@@ -292,15 +296,16 @@ public:
     gradient.resize(x.size());
     for (Eigen::Index k = 0; k < x.size(); ++k)
     {
-      gradient[k] = g[k] * this->Scale;
+      gradient[k] = g[k] * this->Scale / this->EnergyUnit;
     }
-    return energy;
+    return energy / this->EnergyUnit;
   }
 
   /// Called after every line search, at the accepted iterate.
   void AcceptIterate(double energy, const Vector& gradient)
   {
-    this->Run_.Record(this->Run_.Result.Iterations + 1, energy, gradient.norm() / this->Scale);
+    this->Run_.Record(this->Run_.Result.Iterations + 1, energy * this->EnergyUnit,
+      gradient.norm() * this->EnergyUnit / this->Scale);
   }
 
 private:
@@ -308,6 +313,7 @@ private:
   int Dimension;
   double Center[3];
   double Scale;
+  double EnergyUnit;
   bool FirstCall = true;
 };
 
@@ -374,17 +380,24 @@ bool RunLBFGS(Problem& problem, const SiteState& initial, const OptimizerOptions
     // The frame of the initial sites (before any warm-up), as the mesh driver had it.
     double center[3], scale;
     problem.SolverFrame(initial.Sites, center, scale);
-    Objective objective(run, center, scale);
-    Vector x = objective.ToSolver(start.Sites);
     std::vector<double> lower, upper;
     problem.SolverBounds(center, scale, lower, upper, start.Sites.size());
     const double energy = run.Evaluate();
     run.Record(warmUp, energy, problem.GradientNorm(run.Sums));
+    // The power of two nearest to the energy there: the solver's energies are then about 1.
+    const double energyUnit =
+      std::isfinite(energy) && energy > 0.0 ? std::exp2(std::round(std::log2(energy))) : 1.0;
+    Objective objective(run, center, scale, energyUnit);
+    Vector x = objective.ToSolver(start.Sites);
 
     LBFGSpp::LBFGSBParam<double> parameters;
     parameters.m = std::max(1, options.NumberOfCorrections);
-    parameters.epsilon = 0.0; // no stop rule of the solver's own: Run::Record applies them all
+    // No stop rule of the solver's own: Run::Record applies them all (LBFGS++'s default energy
+    // test, a change under 1e-10 in one iteration, is absolute below an energy of 1: it ended a
+    // CVT on a mesh 14 mm across, in metres, after 5 of 100 iterations).
+    parameters.epsilon = 0.0;
     parameters.epsilon_rel = 0.0;
+    parameters.past = 0;
     parameters.max_iterations = 0;
     parameters.max_linesearch = 20;
     const Vector xLower = objective.ToSolver(lower), xUpper = objective.ToSolver(upper);

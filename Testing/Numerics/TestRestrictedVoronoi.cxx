@@ -502,6 +502,51 @@ TEST(RestrictedVoronoi, OptimisedSphereRemeshIsAClosedOrientedSphere)
   }
 }
 
+TEST(RestrictedVoronoi, LBFGSRunsAlikeOnASphereWhateverItsSize)
+{
+  // The same sphere at 1/128 of its size (an exact scaling: coordinates, energies and
+  // gradients scale by powers of two) and 4096 times it. LBFGS++'s own energy test, absolute
+  // below an energy of 1, ended the small one's run after a few iterations ("the solver
+  // reported convergence"), and its test for keeping a correction pair dropped every pair of
+  // the large one.
+  const cvt::SurfaceMesh unit = Sphere(4);
+  const std::vector<double> initial = cvt::SampleMeshSites(unit, 300, 4);
+  cvt::OptimizerOptions options;
+  options.MaximumNumberOfIterations = 40;
+  options.LloydWarmUpIterations = 5;
+  std::vector<cvt::OptimizerResult> results;
+  for (double size : { 1.0, 1.0 / 128.0, 4096.0 })
+  {
+    cvt::SurfaceMesh mesh = unit;
+    std::vector<double> sites = initial;
+    for (double& x : mesh.Points)
+    {
+      x *= size;
+    }
+    for (double& x : sites)
+    {
+      x *= size;
+    }
+    cvt::RestrictedVoronoi engine;
+    ASSERT_TRUE(engine.SetMesh(mesh));
+    cvt::RestrictedProblem problem(engine);
+    cvt::OptimizerResult result;
+    std::string error;
+    ASSERT_TRUE(cvt::RunLBFGS(problem, { sites, {} }, options, nullptr, result, error)) << error;
+    EXPECT_EQ(result.StopReason, "iteration limit") << "size " << size;
+    // Energy / size^4: the same at every size.
+    const double size4 = size * size * size * size;
+    EXPECT_NEAR(result.History.back().Energy / size4, results.empty()
+        ? result.History.back().Energy
+        : results.front().History.back().Energy,
+      1e-9 * result.History.back().Energy / size4)
+      << "size " << size;
+    EXPECT_EQ(result.Evaluations, results.empty() ? result.Evaluations : results.front().Evaluations)
+      << "size " << size;
+    results.push_back(result);
+  }
+}
+
 TEST(RestrictedVoronoi, DualFindsCellPartsThatAreNotDisks)
 {
   // Sites on the axis of a tube thinner than their spacing: every cell is a ring (an annulus,
