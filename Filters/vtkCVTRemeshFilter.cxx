@@ -174,6 +174,82 @@ std::vector<double> SplitPointsOnLoops(
   return points;
 }
 
+/// Where sites would give each part of the input the cells its topology needs in a remesh
+/// (cvt::SitesForComponent): a part that fewer cells reach (an optimisation step can carry a
+/// site off a small part far from the others; three cells on a small ball meet at two points
+/// only, and the remesh loses it) gets its points farthest from where those cells meet it
+/// (the dual's SurfacePoints) and from each other, up to that number.
+std::vector<double> SplitPointsOnParts(
+  const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input, const cvt::RestrictedDual& dual)
+{
+  const auto componentOf = [&](int triangle)
+  {
+    return triangle < 0
+      ? -1
+      : input
+          .PointComponents[static_cast<size_t>(mesh.Triangles[static_cast<size_t>(triangle)][0])];
+  };
+  std::vector<std::vector<const double*>> reached(static_cast<size_t>(input.Components));
+  for (size_t v = 0; v < dual.SurfaceTriangles.size(); ++v)
+  {
+    const int c = componentOf(dual.SurfaceTriangles[v]);
+    if (c >= 0)
+    {
+      reached[static_cast<size_t>(c)].push_back(&dual.SurfacePoints[3 * v]);
+    }
+  }
+  std::vector<int> lacking; // per component: how many cells it lacks
+  for (int c = 0; c < input.Components; ++c)
+  {
+    lacking.push_back(std::max(0,
+      cvt::SitesForComponent(input.ComponentGenus[static_cast<size_t>(c)]) -
+        static_cast<int>(reached[static_cast<size_t>(c)].size())));
+  }
+  std::vector<double> points;
+  if (std::all_of(lacking.begin(), lacking.end(), [](int n) { return n == 0; }))
+  {
+    return points;
+  }
+  std::vector<std::vector<int>> pointsOf(static_cast<size_t>(input.Components));
+  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    const int c = input.PointComponents[static_cast<size_t>(p)];
+    if (c >= 0 && lacking[static_cast<size_t>(c)] > 0)
+    {
+      pointsOf[static_cast<size_t>(c)].push_back(p);
+    }
+  }
+  for (int c = 0; c < input.Components; ++c)
+  {
+    const std::vector<int>& own = pointsOf[static_cast<size_t>(c)];
+    // Farthest-point sampling from the places the cells reach.
+    std::vector<double> gap(own.size(), std::numeric_limits<double>::max());
+    const auto keepAway = [&](const double* from)
+    {
+      for (size_t i = 0; i < own.size(); ++i)
+      {
+        gap[i] = std::min(gap[i], vtkMath::Distance2BetweenPoints(mesh.Point(own[i]), from));
+      }
+    };
+    for (const double* at : reached[static_cast<size_t>(c)])
+    {
+      keepAway(at);
+    }
+    for (int k = 0; k < lacking[static_cast<size_t>(c)] && !own.empty(); ++k)
+    {
+      const size_t far = std::max_element(gap.begin(), gap.end()) - gap.begin();
+      if (!(gap[far] > 0.0))
+      {
+        break; // every point of the part is taken
+      }
+      const double* point = mesh.Point(own[far]);
+      points.insert(points.end(), point, point + 3);
+      keepAway(point);
+    }
+  }
+  return points;
+}
+
 /// A remesh and how it came about.
 struct TopologyRefinement
 {
@@ -281,6 +357,11 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     }
     splitPoints = std::move(dual.SplitPoints);
     const cvt::MeshTopology topology = cvt::RemeshTopology(dual, input.Loops.size());
+    if (topology.Components != input.Components)
+    {
+      const std::vector<double> onParts = SplitPointsOnParts(mesh, input, dual);
+      splitPoints.insert(splitPoints.end(), onParts.begin(), onParts.end());
+    }
     if (topology.BoundaryLoops != input.BoundaryLoops)
     {
       const std::vector<double> onLoops = SplitPointsOnLoops(mesh, input, engine.GetPointLabels());

@@ -968,6 +968,11 @@ std::vector<double> CoveringPoints(const SurfaceMesh& mesh, double spacing)
   return points;
 }
 
+int SitesForComponent(int genus)
+{
+  return 4 + (genus > 0 ? 4 + 16 * genus : 0);
+}
+
 std::vector<double> SampleMeshSites(
   const SurfaceMesh& mesh, int count, std::uint64_t seed, const MeshTopology* topology)
 {
@@ -994,9 +999,7 @@ std::vector<double> SampleMeshSites(
   int floors = 0;
   for (int c = 0; c < components; ++c)
   {
-    quota[c] = topology
-      ? 4 + (topology->ComponentGenus[c] > 0 ? 4 + 16 * topology->ComponentGenus[c] : 0)
-      : 0;
+    quota[c] = topology ? SitesForComponent(topology->ComponentGenus[c]) : 0;
     floors += quota[c];
   }
   if (floors > count / 2)

@@ -107,9 +107,14 @@ CVTNUMERICS_EXPORT double TriangleArea(const SurfaceMesh& mesh, const std::array
 /// triangles wider than them.
 CVTNUMERICS_EXPORT std::vector<double> CoveringPoints(const SurfaceMesh& mesh, double spacing);
 
+/// The fewest sites a component of genus `genus` needs for a remesh with its topology: 4 for
+/// genus 0 (a tetrahedron; three cells on a small ball meet at its two poles only, and their two
+/// triangles cover each other), 8 + 16 g for genus g.
+CVTNUMERICS_EXPORT int SitesForComponent(int genus);
+
 /// `count` points on the surface, drawn with probability proportional to area times density.
 /// With the mesh's topology, every component first gets the few sites its topology needs in a
-/// remesh (4 for genus 0, 8 + 16 g for genus g), when `count` allows, so small parts survive.
+/// remesh (SitesForComponent), when `count` allows, so small parts survive.
 CVTNUMERICS_EXPORT std::vector<double> SampleMeshSites(
   const SurfaceMesh& mesh, int count, std::uint64_t seed, const MeshTopology* topology = nullptr);
 

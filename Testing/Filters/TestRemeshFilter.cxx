@@ -374,6 +374,35 @@ TEST(RemeshFilter, GenusTwoAndTwoPartsKeepTheirTopology)
   ExpectTopology(run.Remesh(), 2, 0, 0);
 }
 
+// A unit sphere and 16 small balls round it (a model of many small pieces, as CGAL's b9_mesh):
+// the optimisation carries sites off the balls, whose few remaining cells meet at two points
+// only, so the remesh loses them unless the topology rounds add sites on every part that fewer
+// cells reach than its topology needs (without: 1 and 3 parts of 17 in the first and last runs).
+TEST(RemeshFilter, SmallPartsFarFromTheOthersKeepTheirCells)
+{
+  for (const auto& [radius, sites] : { std::pair{ 0.03, 100 }, { 0.05, 300 }, { 0.08, 300 } })
+  {
+    vtkNew<vtkAppendPolyData> parts;
+    parts->AddInputData(Sphere());
+    for (int k = 0; k < 16; ++k)
+    {
+      const double angle = 2 * vtkMath::Pi() * k / 16;
+      vtkNew<vtkSphereSource> ball;
+      ball->SetRadius(radius);
+      ball->SetThetaResolution(12);
+      ball->SetPhiResolution(8);
+      ball->SetCenter(1.5 * std::cos(angle), 1.5 * std::sin(angle), 0.3 * std::sin(3 * angle));
+      ball->Update();
+      parts->AddInputData(ball->GetOutput());
+    }
+    parts->Update();
+    RemeshRun run(parts->GetOutput(), sites, 100);
+    ASSERT_TRUE(run.Status) << run.Log->Errors;
+    SCOPED_TRACE("balls of radius " + std::to_string(radius));
+    ExpectTopology(run.Remesh(), 17, 0, 0);
+  }
+}
+
 TEST(RemeshFilter, ThinTubeKeepsItsGenusWithAddedSites)
 {
   // A torus whose tube (circumference 0.25) is thinner than the cells of 40 sites (about 0.4
