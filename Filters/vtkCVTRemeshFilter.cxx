@@ -174,11 +174,13 @@ std::vector<double> SplitPointsOnLoops(
   return points;
 }
 
-/// Where sites would give each part of the input the cells its topology needs in a remesh
-/// (cvt::SitesForComponent): a part that fewer cells reach (an optimisation step can carry a
-/// site off a small part far from the others; three cells on a small ball meet at two points
-/// only, and the remesh loses it) gets its points farthest from where those cells meet it
-/// (the dual's SurfacePoints) and from each other, up to that number.
+/// Where sites would give each part of the input the cells it needs to be a part of the remesh
+/// at all (cvt::SitesForComponent of genus 0: its genus is the rounds' other business, the cells
+/// that are not disks; a genus-133 cheese at 1000 sites asked for 1100 sites here at once): a
+/// part that fewer cells reach (an optimisation step can carry a site off a small part far from
+/// the others; three cells on a small ball meet at two points only, and the remesh loses it)
+/// gets its points farthest from where those cells meet it (the dual's SurfacePoints) and from
+/// each other, up to that number.
 std::vector<double> SplitPointsOnParts(
   const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input, const cvt::RestrictedDual& dual)
 {
@@ -201,9 +203,8 @@ std::vector<double> SplitPointsOnParts(
   std::vector<int> lacking; // per component: how many cells it lacks
   for (int c = 0; c < input.Components; ++c)
   {
-    lacking.push_back(std::max(0,
-      cvt::SitesForComponent(input.ComponentGenus[static_cast<size_t>(c)]) -
-        static_cast<int>(reached[static_cast<size_t>(c)].size())));
+    lacking.push_back(std::max(
+      0, cvt::SitesForComponent(0) - static_cast<int>(reached[static_cast<size_t>(c)].size())));
   }
   std::vector<double> points;
   if (std::all_of(lacking.begin(), lacking.end(), [](int n) { return n == 0; }))
