@@ -241,8 +241,8 @@ int RunSurface(const Options& options)
   vtkPolyData* sites = cvt->GetSitesOutput();
   vtkPolyData* remesh = cvt->GetRemeshOutput();
   // A mesh's remesh is the restricted Delaunay triangulation of the GPU's sites on the mesh
-  // itself (exact, with the input's topology), not the dual of the geometry image's labels,
-  // which is not always manifold across an atlas's seams.
+  // itself (exact, with the input's topology, shaped against the mesh), not the dual of the
+  // geometry image's labels.
   vtkNew<vtkCVTRemeshFilter> exact;
   stage = Clock::now();
   if (!options.Input.empty())

@@ -3,8 +3,11 @@
 #include "cvtParameterization.h"
 #include "cvtProblems.h"
 #include "cvtQuality.h"
+#include "cvtRemesh.h"
+#include "cvtRestrictedVoronoi.h"
 #include "cvtSampling.h"
 #include "cvtSurface.h"
+#include "cvtSurfaceMesh.h"
 #include "vtkCVTEngineChoice.h"
 #include "vtkCVTOutputHelpers.h"
 #include "vtkCVTRemeshFilter.h"
@@ -106,6 +109,56 @@ void CopySurfaceArrays(
     array->GetTuples(ids, values);
     points->AddArray(values);
   }
+}
+
+/// The remesh output of an atlas: the dual across the seams of `labels` on `vertices` (the sites'
+/// points on the surface, at `pixels`) made manifold (cvt::ManifoldRemesh: where three charts
+/// meet, the dual can miss or double a triangle), with the image's surface arrays at its
+/// vertices and their SiteId.
+void FillAtlasRemesh(vtkPolyData* output, vtkImageData* input, const cvt::GeometryImage& image,
+  const std::vector<int>& labels, const std::vector<double>& vertices,
+  const std::vector<long long>& pixels)
+{
+  // Sites whose cells hold a pixel of the surface's border: valid, next to one off the surface or
+  // outside the image, with no seam partner to go on in.
+  std::vector<char> onBorder(vertices.size() / 3, 0);
+  for (int j = 0; j < image.Height; ++j)
+  {
+    for (int i = 0; i < image.Width; ++i)
+    {
+      const long long p = static_cast<long long>(j) * image.Width + i;
+      if (!image.IsValid(p) || image.SeamPartner[static_cast<size_t>(p)] >= 0 || labels[p] < 0)
+      {
+        continue;
+      }
+      for (const auto& [di, dj] : { std::pair{ 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } })
+      {
+        const long long next = image.Neighbor(i, j, di, dj);
+        if (next < 0 || !image.IsValid(next))
+        {
+          onBorder[static_cast<size_t>(labels[p])] = 1;
+        }
+      }
+    }
+  }
+  const cvt::Remesh remesh =
+    cvt::ManifoldRemesh(vertices, cvt::DualTriangles(image, labels, vertices), onBorder);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(remesh.SiteIds.size()));
+  std::vector<long long> at(remesh.SiteIds.size());
+  for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
+  {
+    points->SetPoint(static_cast<vtkIdType>(v), &remesh.Points[3 * v]);
+    at[v] = pixels[static_cast<size_t>(remesh.SiteIds[v])];
+  }
+  output->SetPoints(points);
+  output->SetPolys(cvtvtk::TriangleCells(remesh.Triangles));
+  cvtvtk::AddMeshQuality(output->GetFieldData(), cvt::MeasureMesh(remesh.Points, remesh.Triangles));
+  cvtvtk::AddFieldValue(output->GetFieldData(), "RemovedTriangles", remesh.RemovedTriangles);
+  cvtvtk::AddFieldValue(output->GetFieldData(), "FilledHoles", remesh.FilledHoles);
+  output->GetPointData()->AddArray(cvtvtk::SiteIdArray(remesh.SiteIds));
+  CopySurfaceArrays(input->GetPointData(), at, output->GetPointData());
 }
 
 /// Weighs each pixel's area by the density array `name` of the geometry image (one component;
@@ -267,22 +320,7 @@ bool vtkCVTSurfaceFilter::Compute(
       << " of a cell; use a finer resolution.");
   }
 
-  cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
-  if (!choice.UseOpenGL && choice.HardwareOpenGL && !image.SeamPartner.empty())
-  {
-    choice.UseOpenGL = true;
-    choice.Name = "OpenGL";
-    choice.Reason += "; but only the OpenGL engine follows the seams of this atlas";
-  }
-  if (!choice.UseOpenGL && !image.SeamPartner.empty())
-  {
-    vtkErrorMacro("This geometry image is an atlas (charts joined by seams), which only the "
-                  "OpenGL engine follows, and this run is on the CPU ("
-      << choice.Reason
-      << "); set Engine to OpenGL, or remesh the mesh itself with CVT Remesh "
-         "(vtkCVTRemeshFilter), exact on the CPU.");
-    return false;
-  }
+  const cvtvtk::EngineChoice choice = cvtvtk::ChooseEngine(this->Engine);
   const bool computed = choice.UseOpenGL
     ? this->RunOnGPU(input, image, choice.Reason, outputVector)
     : this->RunOnCPU(input, image, weights.ValidPixels, weighted, choice.Reason, outputVector);
@@ -300,16 +338,28 @@ bool vtkCVTSurfaceFilter::Compute(
 }
 
 //------------------------------------------------------------------------------
-bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage& image,
-  const std::string& reason, vtkInformationVector* outputVector)
+bool vtkCVTSurfaceFilter::DrawSites(
+  const cvt::GeometryImage& image, std::vector<double>& sites, std::vector<long long>& pixels)
 {
-  std::vector<long long> pixels;
-  const std::vector<double> sites = cvt::SampleSurfaceSites(
+  sites = cvt::SampleSurfaceSites(
     image, this->NumberOfSites, static_cast<std::uint64_t>(this->RandomSeed), pixels);
   if (static_cast<int>(pixels.size()) < this->NumberOfSites)
   {
     vtkErrorMacro("Only " << pixels.size() << " distinct pixels could hold the "
                           << this->NumberOfSites << " sites; use fewer sites or a finer image.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage& image,
+  const std::string& reason, vtkInformationVector* outputVector)
+{
+  std::vector<double> sites;
+  std::vector<long long> pixels;
+  if (!this->DrawSites(image, sites, pixels))
+  {
     return false;
   }
   vtkCVTSurfaceEngine* engine = this->GetOpenGLEngine<vtkCVTSurfaceEngine>();
@@ -347,16 +397,22 @@ bool vtkCVTSurfaceFilter::RunOnGPU(vtkImageData* input, const cvt::GeometryImage
   labelsOut->ShallowCopy(input);
   labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(labels));
 
-  const std::vector<std::array<int, 3>> dual = cvt::DualTriangles(image, labels, result.Sites);
   vtkPolyData* remeshOut = vtkPolyData::GetData(outputVector, RemeshPort);
-  remeshOut->SetPoints(points);
-  remeshOut->SetPolys(cvtvtk::TriangleCells(dual));
-  cvtvtk::AddMeshQuality(remeshOut->GetFieldData(), cvt::MeasureMesh(result.Sites, dual));
-  vtkNew<vtkIntArray> remeshIds;
-  remeshIds->DeepCopy(sitesOut->GetPointData()->GetArray("SiteId"));
-  remeshOut->GetPointData()->AddArray(remeshIds);
-  CopySurfaceArrays(input->GetPointData(), result.Pixels, remeshOut->GetPointData());
-
+  if (!image.SeamPartner.empty())
+  {
+    FillAtlasRemesh(remeshOut, input, image, labels, result.Sites, result.Pixels);
+  }
+  else
+  {
+    const std::vector<std::array<int, 3>> dual = cvt::DualTriangles(image, labels, result.Sites);
+    remeshOut->SetPoints(points);
+    remeshOut->SetPolys(cvtvtk::TriangleCells(dual));
+    cvtvtk::AddMeshQuality(remeshOut->GetFieldData(), cvt::MeasureMesh(result.Sites, dual));
+    vtkNew<vtkIntArray> remeshIds;
+    remeshIds->DeepCopy(sitesOut->GetPointData()->GetArray("SiteId"));
+    remeshOut->GetPointData()->AddArray(remeshIds);
+    CopySurfaceArrays(input->GetPointData(), result.Pixels, remeshOut->GetPointData());
+  }
   cvtvtk::FillHistoryTable(vtkTable::GetData(outputVector, HistoryPort), result.History);
   return true;
 }
@@ -370,6 +426,10 @@ bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage
   // from Geogram's, where 60 per site gave -0.14%, at two thirds of the time).
   const double wanted = std::max(20000.0, 20.0 * this->NumberOfSites);
   const int stride = std::max(1, static_cast<int>(std::floor(std::sqrt(2.0 * valid / wanted))));
+  if (!image.SeamPartner.empty())
+  {
+    return this->RunAtlasOnCPU(input, image, stride, weighted, reason, outputVector);
+  }
   std::vector<double> coordinates;
   std::vector<std::array<int, 3>> triangles;
   std::vector<long long> pixels;
@@ -456,6 +516,79 @@ bool vtkCVTSurfaceFilter::RunOnCPU(vtkImageData* input, const cvt::GeometryImage
     sitesOut->GetPoint(i, &sites[3 * i]);
   }
   labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(cvt::NearestSiteLabels(image, sites)));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCVTSurfaceFilter::RunAtlasOnCPU(vtkImageData* input, const cvt::GeometryImage& image,
+  int stride, bool weighted, const std::string& reason, vtkInformationVector* outputVector)
+{
+  // The charts as one mesh of pieces, apart along the seams: the restricted Voronoi cells are
+  // those of the 3D sites, so they reach across the seams whatever the mesh's pieces (the
+  // sliver of a pixel or a stride between two charts is left out of their integrals).
+  cvt::SurfaceMesh mesh;
+  std::vector<long long> pointPixels;
+  cvt::GeometryImageMesh(image, stride, mesh.Points, mesh.Triangles, &pointPixels);
+  if (weighted)
+  {
+    vtkDataArray* density = input->GetPointData()->GetArray(this->DensityArray.c_str());
+    for (long long p : pointPixels)
+    {
+      mesh.Density.push_back(density->GetTuple1(p)); // checked by WeighByDensity
+    }
+  }
+  cvt::MeshRepairReport repairs;
+  std::string error = cvt::RepairSurfaceMesh(mesh, repairs);
+  if (!error.empty())
+  {
+    vtkErrorMacro("The charts of this atlas do not make a surface mesh: " << error << ".");
+    return false;
+  }
+  std::vector<double> initial;
+  std::vector<long long> pixels;
+  if (!this->DrawSites(image, initial, pixels))
+  {
+    return false;
+  }
+  cvt::RestrictedVoronoi engine;
+  const bool meshSet = engine.SetMesh(mesh);
+  const int ranks = this->ShareCellSumsAcrossRanks(&engine, meshSet, outputVector);
+  cvt::RestrictedProblem problem(engine);
+  cvt::OptimizerOptions options = this->GetOptimizerOptions();
+  options.LloydWarmUpIterations = std::min(5, this->MaximumNumberOfIterations); // as the mesh's
+  cvt::OptimizerResult result;
+  if (!meshSet || !this->Optimize(problem, cvt::SiteState{ initial, {} }, options, result, error))
+  {
+    vtkErrorMacro(
+      "The CPU surface CVT failed: " << (error.empty() ? engine.GetLastError() : error) << ".");
+    return false;
+  }
+
+  // --- Outputs: the sites as optimised (the centroids of their cells, slightly inside a curved
+  // surface); the remesh's vertices the points of their cells nearest to them, on the surface.
+  vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, SitesPort);
+  cvtvtk::FillSites(sitesOut, result.Sites, 3, 0.0, result.Sums);
+  vtkFieldData* fields = sitesOut->GetFieldData();
+  AddRunFields(fields, result, result.Sums.GradientNorm());
+  cvtvtk::AddFieldValue(fields, "SurfaceArea", cvt::SurfaceArea(mesh));
+  cvtvtk::AddFieldString(fields, "Engine", "CPU");
+  std::ostringstream why;
+  why << reason << "; the atlas's charts as " << mesh.Triangles.size() << " triangles (every "
+      << stride << " pixels), exact restricted Voronoi cells, the dual across the seams";
+  cvtvtk::AddFieldString(fields, "EngineReason", why.str());
+  cvtvtk::AddFieldValue(fields, "EngineRanks", ranks);
+
+  const std::vector<int> labels = cvt::NearestSiteLabels(image, result.Sites);
+  vtkImageData* labelsOut = vtkImageData::GetData(outputVector, LabelsPort);
+  labelsOut->ShallowCopy(input);
+  labelsOut->GetPointData()->AddArray(cvtvtk::SiteIdArray(labels));
+
+  std::vector<double> vertices = initial;
+  cvt::NearestPointsInCells(image, labels, result.Sites, vertices, pixels);
+  FillAtlasRemesh(
+    vtkPolyData::GetData(outputVector, RemeshPort), input, image, labels, vertices, pixels);
+
+  cvtvtk::FillHistoryTable(vtkTable::GetData(outputVector, HistoryPort), result.History);
   return true;
 }
 

@@ -13,9 +13,10 @@
  * Engine (vtkCVTGPUAlgorithm): OPENGL runs the geometry image on the GPU, as above; CPU
  * triangulates the geometry image (at most about 60 triangles per site) and remeshes it with
  * vtkCVTRemeshFilter's exact restricted Voronoi engine, the labels then being each pixel's
- * nearest site; AUTO (default) takes the faster engine (see vtkCVTGPUAlgorithm), but OpenGL on
- * a hardware GPU for an atlas, whose seams only the OpenGL engine follows. Optimiser
- * properties and stop rules: vtkCVTAlgorithm.
+ * nearest site (for an atlas, whose charts the mesh keeps apart at the seams, the sites are
+ * optimised on it and the remesh is the dual across the seams, as on the GPU); AUTO (default)
+ * takes the faster engine (see vtkCVTGPUAlgorithm). Optimiser properties and stop rules:
+ * vtkCVTAlgorithm.
  *
  * Outputs:
  * 0. sites: 3D vtkPolyData, SiteId, Mass, Energy; field data Energy, GradientNorm (tangential),
@@ -34,6 +35,7 @@
 #include "vtkCVTGPUAlgorithm.h"
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 namespace cvt
 {
@@ -95,6 +97,10 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   bool Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
+  /** The sites drawn by the area weights (RandomSeed) and their pixels; false (an error) when
+   * fewer distinct pixels than sites can hold them. */
+  bool DrawSites(
+    const cvt::GeometryImage& image, std::vector<double>& sites, std::vector<long long>& pixels);
   /** The OpenGL engine's run: the geometry image on the GPU. */
   bool RunOnGPU(vtkImageData* input, const cvt::GeometryImage& image, const std::string& reason,
     vtkInformationVector* outputVector);
@@ -103,6 +109,13 @@ protected:
    * vtkCVTRemeshFilter.
    */
   bool RunOnCPU(vtkImageData* input, const cvt::GeometryImage& image, long long valid,
+    bool weighted, const std::string& reason, vtkInformationVector* outputVector);
+  /**
+   * The CPU engine's run on an atlas: the sites optimised on the charts as a mesh (exact
+   * restricted Voronoi cells, which are 3D and so cross the seams), the labels each pixel's
+   * nearest site and the remesh the dual across the seams, as on the GPU.
+   */
+  bool RunAtlasOnCPU(vtkImageData* input, const cvt::GeometryImage& image, int stride,
     bool weighted, const std::string& reason, vtkInformationVector* outputVector);
 
   std::string DensityArray;

@@ -2575,6 +2575,30 @@ Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int ma
   return BuildRemeshAgainst(dual, inputBoundaryLoops, maximumHole, &input);
 }
 
+Remesh ManifoldRemesh(const std::vector<double>& points,
+  const std::vector<std::array<int, 3>>& triangles, const std::vector<char>& onBorder,
+  int maximumHole)
+{
+  // As a restricted dual whose cells are all disks: one vertex per point.
+  RestrictedDual dual;
+  const size_t count = points.size() / 3;
+  dual.Sites.resize(count);
+  std::iota(dual.Sites.begin(), dual.Sites.end(), 0);
+  dual.Triangles = triangles;
+  dual.SurfacePoints = points;
+  dual.BoundaryPoints = points;
+  dual.SurfaceTriangles.assign(count, -1);
+  dual.BoundaryTriangles.assign(count, -1);
+  dual.SurfaceBarycentric.assign(3 * count, 0.0);
+  dual.BoundaryBarycentric.assign(3 * count, 0.0);
+  dual.OnBoundary = onBorder;
+  dual.OnBoundary.resize(count, 0);
+  dual.Pinned.assign(count, 0);
+  dual.EulerCharacteristic.assign(count, 1);
+  // Every loop of border points is the surface's own: none is closed.
+  return BuildRemesh(dual, std::numeric_limits<size_t>::max() / 2, maximumHole);
+}
+
 int OpenCoveredHoles(
   Remesh& remesh, const SurfaceMesh& surface, const std::vector<std::vector<int>>& inputLoops)
 {

@@ -107,6 +107,16 @@ CVTNUMERICS_EXPORT Remesh BuildRemesh(
 CVTNUMERICS_EXPORT Remesh BuildRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops,
   int maximumHole = 8, const SurfaceMesh* surface = nullptr);
 
+/// A triangle soup on `points` (a vertex each: a labelling's dual, cvt::DualTriangles) made
+/// manifold as BuildRemesh makes a restricted dual, with no input to shape it against: triangles
+/// that would double an edge or run one the same way twice dropped, the holes of at most
+/// `maximumHole` edges they leave closed unless all their points are `onBorder` (per point; the
+/// surface's own border), thin triangles flipped wider, pinched vertices split. Its SiteIds name
+/// the points.
+CVTNUMERICS_EXPORT Remesh ManifoldRemesh(const std::vector<double>& points,
+  const std::vector<std::array<int, 3>>& triangles, const std::vector<char>& onBorder,
+  int maximumHole = 8);
+
 /// Holes of the input that the remesh covers (smaller than its cells: no border vertex of the
 /// remesh within an edge length of them) are opened, one remesh triangle each, the one nearest
 /// to the hole's middle whose corners are off the border and off the other opened triangles,

@@ -140,6 +140,18 @@ def main(plugin, data_dir, output_dir):
                    if dense_sites.GetPoint(i)[0] > 0)
     check(positive > 60, "surface density draws the sites where it is larger (%d of 100)" % positive)
 
+    # Any mesh becomes an atlas, which CVT Surface follows across its seams on either engine
+    # (here Auto: the CPU without a GPU): a sphere's remesh is closed, a vertex per site.
+    from paraview.simple import Sphere
+    ball = Sphere(ThetaResolution=32, PhiResolution=16)
+    atlas_image = CVTMeshGeometryImage(Input=ball, Resolution=[128, 128], Parameterization="Atlas")
+    atlas_cvt = CVTSurface(Input=atlas_image, NumberOfSites=80, MaximumNumberOfIterations=10)
+    atlas_cvt.UpdatePipeline()
+    atlas_remesh = servermanager.Fetch(atlas_cvt, idx=2)
+    check(atlas_remesh.GetNumberOfPoints() == 80 and atlas_remesh.GetNumberOfPolys() == 2 * 80 - 4,
+          "sphere atlas remesh: %d vertices, %d triangles (80, 156)" %
+          (atlas_remesh.GetNumberOfPoints(), atlas_remesh.GetNumberOfPolys()))
+
     # File > Open of an OFF mesh picks the plugin's reader; its octahedron remeshes closed.
     from paraview.simple import OpenDataFile
     octahedron = os.path.join(output_dir, "octahedron.off")
