@@ -16,15 +16,16 @@
  * an atlas (cvt::BuildAtlas): disk-shaped charts of bounded normal variation, each mapped by
  * least squares conformal maps, scaled as large as fits and packed into the Resolution[0] x
  * Resolution[1] image, with an int point array ChartId (-1
- * between charts) and SeamPartner (the pixel where the surface goes on across a chart border,
- * -1 for none); field data NumberOfCharts, SeamLength, SeamPixels and the distortion range
+ * between charts), SeamPartner (the pixel where the surface goes on across a chart border,
+ * -1 for none) and an unsigned char SurfaceBorder (1 within a pixel and a half of the mesh's own
+ * border); field data NumberOfCharts, SeamLength, SeamPixels and the distortion range
  * (Minimum/MaximumAreaStretch, MaximumAngleStretch). Pinched points are split and triangles
  * oriented first (a warning says so).
  *
  * Every point array of the mesh (a density, say, for vtkCVTSurfaceFilter's DensityArray) is
  * carried onto the pixels: each pixel interpolates the triangle it samples; pixels off the
  * surface get zeros. Arrays named like the image's own (Position, Normal, AreaWeight, Mask,
- * ChartId, SeamPartner) are left out.
+ * ChartId, SeamPartner, SurfaceBorder) are left out.
  *
  * The mesh must be made of triangles with finite coordinates, no zero-area triangle and every
  * edge on at most two triangles; a non-orientable surface is refused. Each is an error saying

@@ -365,6 +365,14 @@ void WriteGeometryImage(const cvt::GeometryImage& image, vtkImageData* output)
   {
     output->GetPointData()->AddArray(IntArray("SeamPartner", image.SeamPartner));
   }
+  if (!image.Border.empty())
+  {
+    vtkNew<vtkUnsignedCharArray> border;
+    border->SetName("SurfaceBorder");
+    border->SetNumberOfValues(static_cast<vtkIdType>(image.Border.size()));
+    std::copy(image.Border.begin(), image.Border.end(), border->GetPointer(0));
+    output->GetPointData()->AddArray(border);
+  }
   vtkFieldData* fields = output->GetFieldData();
   AddFieldValue(fields, "WrapU", image.WrapU ? 1.0 : 0.0);
   AddFieldValue(fields, "WrapV", image.WrapV ? 1.0 : 0.0);

@@ -88,7 +88,7 @@ void CopySurfaceArrays(
   vtkPointData* image, const std::vector<long long>& pixels, vtkPointData* points)
 {
   static const std::set<std::string> own = { "Position", "Normal", "AreaWeight", "Mask", "ChartId",
-    "SeamPartner", "SiteId" };
+    "SeamPartner", "SurfaceBorder", "SiteId" };
   vtkNew<vtkIdList> ids;
   ids->SetNumberOfIds(static_cast<vtkIdType>(pixels.size()));
   for (size_t i = 0; i < pixels.size(); ++i)
@@ -119,26 +119,14 @@ void FillAtlasRemesh(vtkPolyData* output, vtkImageData* input, const cvt::Geomet
   const std::vector<int>& labels, const std::vector<double>& vertices,
   const std::vector<long long>& pixels)
 {
-  // Sites whose cells hold a pixel of the surface's border: valid, next to one off the surface or
-  // outside the image, with no seam partner to go on in.
+  // Sites whose cells hold a pixel of the surface's own border (SurfaceBorder): their holes in
+  // the dual are the surface's, not to be closed.
   std::vector<char> onBorder(vertices.size() / 3, 0);
-  for (int j = 0; j < image.Height; ++j)
+  for (size_t p = 0; p < image.Border.size(); ++p)
   {
-    for (int i = 0; i < image.Width; ++i)
+    if (image.Border[p] && labels[p] >= 0)
     {
-      const long long p = static_cast<long long>(j) * image.Width + i;
-      if (!image.IsValid(p) || image.SeamPartner[static_cast<size_t>(p)] >= 0 || labels[p] < 0)
-      {
-        continue;
-      }
-      for (const auto& [di, dj] : { std::pair{ 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } })
-      {
-        const long long next = image.Neighbor(i, j, di, dj);
-        if (next < 0 || !image.IsValid(next))
-        {
-          onBorder[static_cast<size_t>(labels[p])] = 1;
-        }
-      }
+      onBorder[static_cast<size_t>(labels[p])] = 1;
     }
   }
   const cvt::Remesh remesh =
@@ -276,6 +264,14 @@ bool vtkCVTSurfaceFilter::ReadGeometryImage(
     for (vtkIdType p = 0; p < seams->GetNumberOfTuples(); ++p)
     {
       image.SeamPartner[p] = static_cast<int>(seams->GetComponent(p, 0));
+    }
+  }
+  if (vtkDataArray* border = pd->GetArray("SurfaceBorder"))
+  {
+    image.Border.resize(static_cast<size_t>(border->GetNumberOfTuples()));
+    for (vtkIdType p = 0; p < border->GetNumberOfTuples(); ++p)
+    {
+      image.Border[p] = border->GetComponent(p, 0) != 0.0 ? 1 : 0;
     }
   }
   if (!ReadFloats(pd->GetArray("AreaWeight"), 1, image.AreaWeight))

@@ -529,13 +529,40 @@ std::vector<int> Rasterize(const SurfaceMesh& mesh, const Faces& faces,
 
 /// Seam partners: every pixel within two pixels of a chart edge that another chart shares is
 /// mirrored across that edge into the other chart (the point as far past the edge as the pixel
-/// is before it), and the valid pixel of that chart nearest there is its partner.
+/// is before it), and the valid pixel of that chart nearest there is its partner. The pixels
+/// within a pixel and a half of a chart edge that no other triangle shares (the surface's own
+/// border) are marked as such (Border).
+/// Marks (1 in `marks`) the pixels of chart `id` whose centres lie within `reach` pixels of the
+/// segment from `a` to `b` (in pixels).
+void MarkNear(const std::vector<int>& chartOf, int width, int height, int id, const Vector2d& a,
+  const Vector2d& b, double reach, std::vector<unsigned char>& marks)
+{
+  const Vector2d lo = a.cwiseMin(b), hi = a.cwiseMax(b), edge = b - a;
+  for (int j = std::max(0, static_cast<int>(std::floor(lo.y() - reach)));
+       j <= std::min(height - 1, static_cast<int>(std::ceil(hi.y() + reach))); ++j)
+  {
+    for (int i = std::max(0, static_cast<int>(std::floor(lo.x() - reach)));
+         i <= std::min(width - 1, static_cast<int>(std::ceil(hi.x() + reach))); ++i)
+    {
+      const size_t p = static_cast<size_t>(j) * width + i;
+      const Vector2d centre(i + 0.5, j + 0.5);
+      const double lambda = std::clamp(
+        edge.squaredNorm() > 0.0 ? (centre - a).dot(edge) / edge.squaredNorm() : 0.0, 0.0, 1.0);
+      if (chartOf[p] == id && (centre - (a + lambda * edge)).norm() < reach)
+      {
+        marks[p] = 1;
+      }
+    }
+  }
+}
+
 void FindSeams(const SurfaceMesh& mesh, const Faces& faces, const std::vector<Chart>& charts,
   double scale, int margin, Atlas& atlas)
 {
   GeometryImage& image = atlas.Image;
   const size_t pixels = static_cast<size_t>(image.NumberOfPixels());
   image.SeamPartner.assign(pixels, -1);
+  image.Border.assign(pixels, 0);
   struct Cut
   {
     Vector2d A, B;                // the edge in this chart's pixels
@@ -562,7 +589,15 @@ void FindSeams(const SurfaceMesh& mesh, const Faces& faces, const std::vector<Ch
     for (int e = 0; e < 3 && id >= 0; ++e)
     {
       const int n = faces.Across[t][e];
-      if (n < 0 || placed[n].first == id || placed[n].first < 0)
+      if (n < 0)
+      {
+        const auto& corners = charts[id].Corners[placed[t].second];
+        MarkNear(atlas.Chart, image.Width, image.Height, id,
+          charts[id].Pixel(corners[e], scale, margin),
+          charts[id].Pixel(corners[(e + 1) % 3], scale, margin), 1.5, image.Border);
+        continue;
+      }
+      if (placed[n].first == id || placed[n].first < 0)
       {
         continue;
       }

@@ -139,6 +139,10 @@ std::string CheckGeometryImage(const GeometryImage& image, int numberOfSites)
   {
     return "the geometry image's seam partners do not hold one value per pixel";
   }
+  if (!image.Border.empty() && static_cast<long long>(image.Border.size()) != pixels)
+  {
+    return "the geometry image's border marks do not hold one value per pixel";
+  }
   for (size_t p = 0; p < image.SeamPartner.size(); ++p)
   {
     const int partner = image.SeamPartner[p];

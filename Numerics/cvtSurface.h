@@ -29,6 +29,9 @@ struct GeometryImage
   /// Per pixel of an atlas: the pixel where the surface goes on across a chart border (its seam
   /// partner), -1 where it does not; empty = no seams.
   std::vector<int> SeamPartner;
+  /// Per pixel of an atlas: 1 within a pixel and a half of the surface's own border (edges of
+  /// one triangle), where a chart ends and no other goes on; empty = none known.
+  std::vector<unsigned char> Border;
 
   long long NumberOfPixels() const { return static_cast<long long>(this->Width) * this->Height; }
   bool IsValid(long long p) const { return this->Mask.empty() || this->Mask[p] != 0; }

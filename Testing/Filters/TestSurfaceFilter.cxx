@@ -731,6 +731,10 @@ TEST(MeshGeometryImage, AnyMeshBecomesAnAtlasAndRemeshesWithItsTopologyOnEitherE
     EXPECT_NEAR(
       fields->GetArray("TotalArea")->GetTuple1(0), MeshArea(c.Mesh), 1e-3 * MeshArea(c.Mesh));
     ASSERT_NE(gi->GetOutput()->GetPointData()->GetArray("SeamPartner"), nullptr);
+    // Pixels by the surface's own border are marked, on open meshes only.
+    vtkDataArray* border = gi->GetOutput()->GetPointData()->GetArray("SurfaceBorder");
+    ASSERT_NE(border, nullptr);
+    EXPECT_EQ(border->GetRange()[1] > 0.0, c.Loops > 0);
 
     double energy[2] = { 0.0, 0.0 };
     for (int engine : { vtkCVTSurfaceFilter::OPENGL, vtkCVTSurfaceFilter::CPU })

@@ -171,6 +171,55 @@ TEST(Atlas, BorderPixelsOfAClosedSurfaceContinueAcrossSeams)
   }
 }
 
+// Pixels by the surface's own border (edges of one triangle) are marked, and only those: none on
+// a closed surface, on the open tube its chart-border pixels that go on nowhere, at its rims.
+TEST(Atlas, PixelsByTheSurfacesOwnBorderAreMarked)
+{
+  for (const Case& c : Cases())
+  {
+    SCOPED_TRACE(c.Name);
+    ASSERT_EQ(c.Error, "");
+    const cvt::GeometryImage& image = c.Atlas.Image;
+    ASSERT_EQ(image.Border.size(), static_cast<size_t>(image.NumberOfPixels()));
+    const double pixel = std::sqrt(cvt::SurfaceArea(c.Mesh) / ValidPixels(image));
+    long long marked = 0, unmarked = 0, offRim = 0;
+    for (int j = 1; j + 1 < image.Height; ++j)
+    {
+      for (int i = 1; i + 1 < image.Width; ++i)
+      {
+        const long long p = static_cast<long long>(j) * image.Width + i;
+        if (image.Border[p])
+        {
+          ASSERT_TRUE(image.IsValid(p));
+          ++marked;
+          const double z = image.Position[3 * p + 2];
+          offRim += std::min(z, 1.0 - z) > 2.0 * pixel ? 1 : 0;
+        }
+        bool chartBorder = false;
+        for (long long q : { p - 1, p + 1, p - image.Width, p + image.Width })
+        {
+          chartBorder = chartBorder || c.Atlas.Chart[q] != c.Atlas.Chart[p];
+        }
+        unmarked += image.IsValid(p) && chartBorder && image.SeamPartner[p] < 0 && !image.Border[p];
+      }
+    }
+    if (c.Closed)
+    {
+      EXPECT_EQ(marked, 0);
+    }
+    else
+    {
+      EXPECT_GT(marked, 0);
+      EXPECT_EQ(offRim, 0) << "of " << marked;
+      EXPECT_LT(unmarked, marked / 50) << "chart-border pixels without a partner left unmarked";
+    }
+  }
+  cvt::GeometryImage image = Cases()[0].Atlas.Image;
+  image.Border.pop_back();
+  EXPECT_NE(cvt::CheckGeometryImage(image, 1).find("border marks do not hold one value per pixel"),
+    std::string::npos);
+}
+
 TEST(Atlas, ATooSmallImageIsAnError)
 {
   cvt::AtlasOptions options;
