@@ -2120,14 +2120,28 @@ std::vector<std::array<int, 3>> TriangulateHole(
 /// cleaning), undoing the split: each is moved a tenth of the way to the centroid of its own
 /// triangles. Copies whose rings were themselves coincident copies (a pinch along a line, as on
 /// the two sheets of a wall far thinner than the cells: assimp's regr01.obj) land on one place
-/// again; they move again from there, in up to three rounds. Returns the number of vertices moved.
+/// again; they move again from there, in up to three rounds. Copies whose rings are the same
+/// vertices (a fan folded onto itself, its two sides facing away from each other) stay at one
+/// place whatever the rounds (or a rounding apart): they move last a twentieth of their mean
+/// distance to the ring along their own triangles' normal, which points to each side. Returns the
+/// number of vertices moved.
 int SeparateCoincidentVertices(Remesh& remesh)
 {
   const size_t vertices = remesh.SiteIds.size();
   std::vector<char> moved(vertices, 0);
-  for (int round = 0; round < 3; ++round)
+  double lo[3] = { 0.0, 0.0, 0.0 }, hi[3] = { 0.0, 0.0, 0.0 };
+  for (size_t v = 0; v < vertices; ++v)
   {
-    std::vector<double> ringSum(3 * vertices, 0.0);
+    for (int c = 0; c < 3; ++c)
+    {
+      lo[c] = v == 0 ? remesh.Points[c] : std::min(lo[c], remesh.Points[3 * v + c]);
+      hi[c] = v == 0 ? remesh.Points[c] : std::max(hi[c], remesh.Points[3 * v + c]);
+    }
+  }
+  const double diagonal = std::sqrt(Distance2(lo, hi));
+  for (int round = 0; round < 4; ++round)
+  {
+    std::vector<double> ringSum(3 * vertices, 0.0), ringReach(vertices, 0.0);
     std::vector<int> ringCount(vertices, 0);
     for (const auto& t : remesh.Triangles)
     {
@@ -2136,21 +2150,54 @@ int SeparateCoincidentVertices(Remesh& remesh)
         const size_t v = static_cast<size_t>(t[k]);
         for (int j = 1; j < 3; ++j)
         {
+          const double* w = &remesh.Points[3 * static_cast<size_t>(t[(k + j) % 3])];
           for (int c = 0; c < 3; ++c)
           {
-            ringSum[3 * v + c] += remesh.Points[3 * static_cast<size_t>(t[(k + j) % 3]) + c];
+            ringSum[3 * v + c] += w[c];
           }
+          ringReach[v] += std::sqrt(Distance2(w, &remesh.Points[3 * v]));
         }
         ringCount[v] += 2;
       }
     }
+    // The last round also takes vertices a billionth of the diagonal apart for one place: the
+    // copies' rounds summed their rings in other orders.
+    const double grain = round == 3 ? 1e-9 * diagonal : 0.0;
     std::map<std::array<double, 3>, std::vector<size_t>> at;
     for (size_t v = 0; v < vertices; ++v)
     {
       if (ringCount[v] > 0)
       {
-        at[{ remesh.Points[3 * v], remesh.Points[3 * v + 1], remesh.Points[3 * v + 2] }].push_back(
-          v);
+        std::array<double, 3> place{ remesh.Points[3 * v], remesh.Points[3 * v + 1],
+          remesh.Points[3 * v + 2] };
+        for (double& x : place)
+        {
+          x = grain > 0.0 ? std::round(x / grain) : x;
+        }
+        at[place].push_back(v);
+      }
+    }
+    // Per vertex, for the last round: its triangles' area-weighted normal.
+    std::vector<double> normal(round == 3 ? 3 * vertices : 0, 0.0);
+    for (const auto& t : remesh.Triangles)
+    {
+      if (normal.empty())
+      {
+        break;
+      }
+      const double* a = &remesh.Points[3 * static_cast<size_t>(t[0])];
+      const double* b = &remesh.Points[3 * static_cast<size_t>(t[1])];
+      const double* c = &remesh.Points[3 * static_cast<size_t>(t[2])];
+      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      double n[3];
+      Cross(u, w, n);
+      for (int v : t)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          normal[3 * static_cast<size_t>(v) + k] += n[k];
+        }
       }
     }
     bool any = false;
@@ -2162,10 +2209,25 @@ int SeparateCoincidentVertices(Remesh& remesh)
       }
       for (size_t v : place.second)
       {
-        for (int c = 0; c < 3; ++c)
+        double* x = &remesh.Points[3 * v];
+        const double ring[3] = { ringSum[3 * v] / ringCount[v], ringSum[3 * v + 1] / ringCount[v],
+          ringSum[3 * v + 2] / ringCount[v] };
+        if (normal.empty())
         {
-          double& x = remesh.Points[3 * v + c];
-          x += 0.1 * (ringSum[3 * v + c] / ringCount[v] - x);
+          for (int c = 0; c < 3; ++c)
+          {
+            x[c] += 0.1 * (ring[c] - x[c]);
+          }
+        }
+        else
+        {
+          double* n = &normal[3 * v];
+          const double length = std::sqrt(Dot(n, n));
+          const double step = 0.05 * ringReach[v] / ringCount[v];
+          for (int c = 0; c < 3 && length > 0.0; ++c)
+          {
+            x[c] += step * n[c] / length;
+          }
         }
         moved[v] = 1;
       }
@@ -2173,7 +2235,11 @@ int SeparateCoincidentVertices(Remesh& remesh)
     }
     if (!any)
     {
-      break;
+      if (round >= 2)
+      {
+        break;
+      }
+      round = 2; // none exactly at one place: the last round looks for those a rounding apart
     }
   }
   return static_cast<int>(std::count(moved.begin(), moved.end(), 1));

@@ -536,12 +536,12 @@ TEST(RestrictedVoronoi, LBFGSRunsAlikeOnASphereWhateverItsSize)
     EXPECT_EQ(result.StopReason, "iteration limit") << "size " << size;
     // Energy / size^4: the same at every size.
     const double size4 = size * size * size * size;
-    EXPECT_NEAR(result.History.back().Energy / size4, results.empty()
-        ? result.History.back().Energy
-        : results.front().History.back().Energy,
+    EXPECT_NEAR(result.History.back().Energy / size4,
+      results.empty() ? result.History.back().Energy : results.front().History.back().Energy,
       1e-9 * result.History.back().Energy / size4)
       << "size " << size;
-    EXPECT_EQ(result.Evaluations, results.empty() ? result.Evaluations : results.front().Evaluations)
+    EXPECT_EQ(
+      result.Evaluations, results.empty() ? result.Evaluations : results.front().Evaluations)
       << "size " << size;
     results.push_back(result);
   }
@@ -2052,4 +2052,56 @@ TEST(SurfaceMesh, DensityOfCellSizesMakesSmallCellsDense)
   mesh.Density = { 1.0, 1.0, 2.0, 1.0, 1.0 }; // mean 1.2
   const std::vector<double> given = cvt::DensityOfCellSizes(mesh, labels, masses);
   EXPECT_NEAR(given[2] / given[1], 4.0, 1e-12);
+}
+
+// A triangle soup made manifold (as a labelling's dual across an atlas's seams): a triangle
+// that runs an edge the same way as another goes, and the hole it leaves is closed; a fan
+// folded onto itself (two copies of its centre with the same ring, the fan's two sides facing
+// away from each other) keeps no two vertices at one place, which a point-merging reader would
+// join into non-manifold edges (the copies' rings cannot tell them apart: they move along their
+// own normals).
+TEST(RestrictedVoronoi, ManifoldRemeshDropsDoubledEdgesAndSeparatesAFoldedFan)
+{
+  // An octahedron with one face given twice, the second time turned the other way.
+  const std::vector<double> octahedron = { 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0,
+    -1 };
+  std::vector<std::array<int, 3>> faces = { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 },
+    { 2, 0, 5 }, { 1, 2, 5 }, { 3, 1, 5 }, { 0, 3, 5 } };
+  faces.push_back({ 0, 4, 2 });
+  const cvt::Remesh closed = cvt::ManifoldRemesh(octahedron, faces, {});
+  const cvt::MeshTopology topology =
+    cvt::ComputeMeshTopology(static_cast<int>(closed.SiteIds.size()), closed.Triangles);
+  EXPECT_EQ(topology.Components, 1);
+  EXPECT_EQ(topology.BoundaryLoops, 0);
+  EXPECT_EQ(topology.EulerCharacteristic, 2);
+  EXPECT_GT(closed.RemovedTriangles, 0);
+
+  // A pentagon's fan, centre 5, and the same fan the other way round about centre 6 at the same
+  // place: a closed surface of no volume.
+  std::vector<double> points;
+  for (int k = 0; k < 5; ++k)
+  {
+    const double angle = 2.0 * 3.14159265358979323846 * k / 5;
+    points.insert(points.end(), { std::cos(angle), std::sin(angle), 0.0 });
+  }
+  points.insert(points.end(), { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 });
+  std::vector<std::array<int, 3>> fans;
+  for (int k = 0; k < 5; ++k)
+  {
+    fans.push_back({ 5, k, (k + 1) % 5 });
+    fans.push_back({ 6, (k + 1) % 5, k });
+  }
+  const cvt::Remesh folded = cvt::ManifoldRemesh(points, fans, {});
+  ASSERT_EQ(folded.SiteIds.size(), 7u);
+  double closest = std::numeric_limits<double>::max();
+  for (size_t v = 0; v < 7; ++v)
+  {
+    for (size_t w = v + 1; w < 7; ++w)
+    {
+      closest =
+        std::min(closest, std::sqrt(cvt::Distance2(&folded.Points[3 * v], &folded.Points[3 * w])));
+    }
+  }
+  // Without the move along the normals the centres' rounds leave them 1e-18 apart.
+  EXPECT_GT(closest, 0.01) << "two vertices (nearly) at one place";
 }
