@@ -1922,6 +1922,41 @@ TEST(SurfaceMesh, ProjectorFindsTheNearestPointExactly)
   EXPECT_EQ(cvt::SurfaceProjector(empty).Nearest(above, q, w), -1);
 }
 
+TEST(SurfaceMesh, ProjectorFindsTheNearestPointOnSliversExactly)
+{
+  // A CAD cylinder's side: 400 slivers a unit long and 0.0016 wide (cut into balls along their
+  // length for the search), beside a sphere of small triangles that sets the pieces' size, and
+  // a fan of slivers closing the tube's end. Against brute force over every triangle, at points
+  // round the tube, inside it and beyond its ends.
+  cvt::SurfaceMesh tube = cvttest::Tube(0.05, 200, 1);
+  const int centre = tube.NumberOfPoints();
+  tube.Points.insert(tube.Points.end(), { 0.0, 0.0, 0.0 });
+  for (int i = 0; i < 200; ++i)
+  {
+    tube.Triangles.push_back({ centre, (i + 1) % 200, i });
+  }
+  const cvt::SurfaceMesh mesh = cvttest::TwoParts(tube, cvttest::Sphere(3), 1.5);
+  const cvt::SurfaceProjector projector(mesh);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> across(-0.2, 0.2), along(-0.3, 1.3);
+  for (int i = 0; i < 3000; ++i)
+  {
+    const double scale = i % 3 == 0 ? 0.25 : 1.0; // a third of the points close to the axis
+    const double p[3] = { scale * across(random), scale * across(random), along(random) };
+    double nearest = 1e300;
+    for (const auto& t : mesh.Triangles)
+    {
+      double q[3], w[3];
+      cvt::ClosestPointOnTriangle(p, mesh.Point(t[0]), mesh.Point(t[1]), mesh.Point(t[2]), q, w);
+      nearest = std::min(nearest, cvt::Distance2(p, q));
+    }
+    double q[3], w[3];
+    ASSERT_GE(projector.Nearest(p, q, w), 0);
+    ASSERT_NEAR(cvt::Distance2(p, q), nearest, 1e-14)
+      << "at " << p[0] << " " << p[1] << " " << p[2];
+  }
+}
+
 TEST(SurfaceMesh, ProjectorThatRemembersAnswersGivesTheSameAnswers)
 {
   // Queries asked again (with the same guess or another, from two threads at once) and more
