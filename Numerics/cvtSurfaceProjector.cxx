@@ -59,18 +59,28 @@ void CoverWithPieces(const double* a, const double* b, const double* c, double r
     x = height > 0.0 ? x / height : 0.0;
   }
   // Squares of side sqrt(2) radius (their balls are `radius` across), larger where there would
-  // be more than MaximumPieces.
+  // be more than MaximumPieces (counted in doubles: a radius of 0 would make them infinite).
   double side = std::sqrt(2.0) * radius;
-  int columns = 1, rows = 1;
+  if (!(side > 0.0))
+  {
+    side = std::max(length, height); // one piece
+  }
+  if (!(side > 0.0))
+  {
+    piece(p0, 0.0); // all corners at one point
+    return;
+  }
+  double columnCount = 1.0, rowCount = 1.0;
   for (;; side *= 1.25)
   {
-    columns = std::max(1, static_cast<int>(std::ceil(length / side)));
-    rows = std::max(1, static_cast<int>(std::ceil(height / side)));
-    if (static_cast<double>(columns) * rows <= MaximumPieces)
+    columnCount = std::max(1.0, std::ceil(length / side));
+    rowCount = std::max(1.0, std::ceil(height / side));
+    if (columnCount * rowCount <= MaximumPieces)
     {
       break;
     }
   }
+  const int columns = static_cast<int>(columnCount), rows = static_cast<int>(rowCount);
   const double width = length / columns, rowHeight = height / rows;
   for (int i = 0; i < columns; ++i)
   {

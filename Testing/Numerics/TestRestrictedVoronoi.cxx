@@ -1957,6 +1957,29 @@ TEST(SurfaceMesh, ProjectorFindsTheNearestPointOnSliversExactly)
   }
 }
 
+TEST(SurfaceMesh, ProjectorOfTrianglesShrunkToPointsFindsTheOthers)
+{
+  // Most triangles with their three corners at one point (a mesh not yet repaired): the median
+  // triangle, which sizes the pieces, has no size; the others are still found, each whole.
+  cvt::SurfaceMesh mesh = cvttest::FlatSquare(2, -1.0, 1.0);
+  const int triangles = mesh.NumberOfTriangles();
+  mesh.Points.insert(mesh.Points.end(), { 0.3, 0.2, 0.5 });
+  for (int i = 0; i <= triangles; ++i)
+  {
+    const int p = mesh.NumberOfPoints() - 1;
+    mesh.Triangles.push_back({ p, p, p });
+  }
+  const cvt::SurfaceProjector projector(mesh);
+  for (double x : { -2.0, -0.5, 0.0, 0.7, 3.0 })
+  {
+    const double p[3] = { x, 0.5 * x, -1.0 };
+    double q[3], w[3];
+    ASSERT_GE(projector.Nearest(p, q, w), 0);
+    EXPECT_NEAR(q[2], 0.0, 1e-15);
+    EXPECT_NEAR(q[0], std::clamp(x, -1.0, 1.0), 1e-12);
+  }
+}
+
 TEST(SurfaceMesh, ProjectorThatRemembersAnswersGivesTheSameAnswers)
 {
   // Queries asked again (with the same guess or another, from two threads at once) and more
