@@ -40,6 +40,20 @@ double SmallestAngle(const cvt::Remesh& remesh)
   return cvt::MeasureMesh(remesh.Points, remesh.Triangles).MinimumAngle;
 }
 
+/// The squared distance from p to the nearest of `triangles` (corners in `points`), by brute force.
+double BruteForceNearest2(const double* p, const std::vector<double>& points,
+  const std::vector<std::array<int, 3>>& triangles)
+{
+  double nearest = 1e300;
+  for (const auto& t : triangles)
+  {
+    double q[3], w[3];
+    cvt::ClosestPointOnTriangle(p, &points[3 * t[0]], &points[3 * t[1]], &points[3 * t[2]], q, w);
+    nearest = std::min(nearest, cvt::Distance2(p, q));
+  }
+  return nearest;
+}
+
 /// Brute force: every triangle cut into m^2 similar pieces, each given by its centroid to the
 /// nearest site (density interpolated linearly at the centroid).
 cvt::CellSums BruteForceSums(const cvt::SurfaceMesh& mesh, const std::vector<double>& sites, int m)
@@ -1363,15 +1377,7 @@ double FarthestPoint(const std::vector<double>& fromPoints,
           p[k] = (1 - u - v) * fromPoints[3 * t[0] + k] + u * fromPoints[3 * t[1] + k] +
             v * fromPoints[3 * t[2] + k];
         }
-        double nearest = 1e300;
-        for (const auto& s : toTriangles)
-        {
-          double q[3], w[3];
-          cvt::ClosestPointOnTriangle(
-            p, &toPoints[3 * s[0]], &toPoints[3 * s[1]], &toPoints[3 * s[2]], q, w);
-          nearest = std::min(nearest, cvt::Distance2(p, q));
-        }
-        farthest = std::max(farthest, std::sqrt(nearest));
+        farthest = std::max(farthest, std::sqrt(BruteForceNearest2(p, toPoints, toTriangles)));
       }
     }
   }
@@ -1883,13 +1889,7 @@ TEST(SurfaceMesh, ProjectorFindsTheNearestPointExactly)
   for (int i = 0; i < 2000; ++i)
   {
     const double p[3] = { across(random), across(random) / 4.0, height(random) };
-    double nearest = 1e300;
-    for (const auto& t : mesh.Triangles)
-    {
-      double q[3], w[3];
-      cvt::ClosestPointOnTriangle(p, mesh.Point(t[0]), mesh.Point(t[1]), mesh.Point(t[2]), q, w);
-      nearest = std::min(nearest, cvt::Distance2(p, q));
-    }
+    const double nearest = BruteForceNearest2(p, mesh.Points, mesh.Triangles);
     double q[3], w[3];
     const int t = projector.Nearest(p, q, w);
     ASSERT_GE(t, 0);
@@ -1943,13 +1943,7 @@ TEST(SurfaceMesh, ProjectorFindsTheNearestPointOnSliversExactly)
   {
     const double scale = i % 3 == 0 ? 0.25 : 1.0; // a third of the points close to the axis
     const double p[3] = { scale * across(random), scale * across(random), along(random) };
-    double nearest = 1e300;
-    for (const auto& t : mesh.Triangles)
-    {
-      double q[3], w[3];
-      cvt::ClosestPointOnTriangle(p, mesh.Point(t[0]), mesh.Point(t[1]), mesh.Point(t[2]), q, w);
-      nearest = std::min(nearest, cvt::Distance2(p, q));
-    }
+    const double nearest = BruteForceNearest2(p, mesh.Points, mesh.Triangles);
     double q[3], w[3];
     ASSERT_GE(projector.Nearest(p, q, w), 0);
     ASSERT_NEAR(cvt::Distance2(p, q), nearest, 1e-14)
