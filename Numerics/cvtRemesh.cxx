@@ -845,11 +845,14 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
   // once a triangle lies within the bound a move is checked against saved no time.
   std::vector<std::uint8_t> nearestSlot(probes.size() / 3, 0);
   // The largest distance to the remesh of the points nearest to the vertices of `group`, and
-  // the farthest point; once beyond `bound`, the first point found beyond it.
+  // the farthest point; once beyond `bound`, the first point found beyond it. Distances up to
+  // `floor` are not told apart (then `floor` and no point): a point is left at the first
+  // triangle within it, which is mostly the first measured.
   const auto farthest = [&](const std::vector<int>& group, int& where,
-                          double bound = std::numeric_limits<double>::infinity())
+                          double bound = std::numeric_limits<double>::infinity(),
+                          double floor = 0.0)
   {
-    double largest = 0.0;
+    double largest = floor * floor;
     where = -1;
     for (int w : group)
     {
@@ -960,7 +963,8 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
       if (changed[static_cast<size_t>(v)] && !onBorder[static_cast<size_t>(v)] &&
         !around[static_cast<size_t>(v)].empty())
       {
-        const double distance = farthest({ v }, far);
+        const double distance =
+          farthest({ v }, far, std::numeric_limits<double>::infinity(), tolerance);
         if (distance > tolerance)
         {
           order.emplace_back(distance, v);
