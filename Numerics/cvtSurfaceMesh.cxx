@@ -968,6 +968,119 @@ std::vector<double> CoveringPoints(const SurfaceMesh& mesh, double spacing)
   return points;
 }
 
+bool HasPointsWithin(const std::vector<double>& points, double tolerance)
+{
+  const size_t n = points.size() / 3;
+  if (n < 2)
+  {
+    return false;
+  }
+  double low[3], high[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    low[k] = high[k] = points[k];
+  }
+  for (size_t p = 1; p < n; ++p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      low[k] = std::min(low[k], points[3 * p + k]);
+      high[k] = std::max(high[k], points[3 * p + k]);
+    }
+  }
+  const double extent = std::max({ high[0] - low[0], high[1] - low[1], high[2] - low[2] });
+  // Cells far wider than the tolerance (a close pair shares one, or lies across a face within
+  // the tolerance of it), and at most 2^20 along each axis (the key's 21 bits).
+  const double cell = std::max(1e3 * tolerance, extent / (1 << 20));
+  if (!(cell > 0.0))
+  {
+    return true; // every point at one place
+  }
+  const auto index = [&](size_t p, int k)
+  { return static_cast<std::uint64_t>(std::floor((points[3 * p + k] - low[k]) / cell)); };
+  const auto key = [](std::uint64_t i, std::uint64_t j, std::uint64_t k)
+  { return (i << 42) | (j << 21) | k; };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> sorted(n);
+  for (size_t p = 0; p < n; ++p)
+  {
+    sorted[p] = { key(index(p, 0), index(p, 1), index(p, 2)), static_cast<std::uint32_t>(p) };
+  }
+  std::sort(sorted.begin(), sorted.end());
+  const double tolerance2 = tolerance * tolerance;
+  const auto close = [&](size_t a, size_t b)
+  { return Distance2(&points[3 * a], &points[3 * b]) <= tolerance2; };
+  // Pairs in one cell; a crowded cell counts as a pair.
+  constexpr size_t MaximumPerCell = 64;
+  for (size_t begin = 0; begin < n;)
+  {
+    size_t end = begin + 1;
+    while (end < n && sorted[end].first == sorted[begin].first)
+    {
+      ++end;
+    }
+    if (end - begin > MaximumPerCell)
+    {
+      return true;
+    }
+    for (size_t a = begin; a < end; ++a)
+    {
+      for (size_t b = a + 1; b < end; ++b)
+      {
+        if (close(sorted[a].second, sorted[b].second))
+        {
+          return true;
+        }
+      }
+    }
+    begin = end;
+  }
+  // Pairs across a face: points within (twice, for rounding) the tolerance of their cell's
+  // faces look into the cells beyond them.
+  const double margin = 2.0 * tolerance;
+  for (size_t p = 0; p < n; ++p)
+  {
+    std::uint64_t at[3];
+    int lowest[3], highest[3];
+    bool near = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      at[k] = index(p, k);
+      const double offset = points[3 * p + k] - low[k] - static_cast<double>(at[k]) * cell;
+      lowest[k] = at[k] > 0 && offset <= margin ? -1 : 0;
+      highest[k] = cell - offset <= margin ? 1 : 0;
+      near = near || lowest[k] != 0 || highest[k] != 0;
+    }
+    if (!near)
+    {
+      continue;
+    }
+    for (int i = lowest[0]; i <= highest[0]; ++i)
+    {
+      for (int j = lowest[1]; j <= highest[1]; ++j)
+      {
+        for (int k = lowest[2]; k <= highest[2]; ++k)
+        {
+          if (i == 0 && j == 0 && k == 0)
+          {
+            continue;
+          }
+          const std::uint64_t other = key(at[0] + i, at[1] + j, at[2] + k);
+          auto q = std::lower_bound(
+            sorted.begin(), sorted.end(), std::make_pair(other, std::uint32_t{ 0 }));
+          for (; q != sorted.end() && q->first == other; ++q)
+          {
+            if (close(p, q->second))
+            {
+              return true;
+            }
+          }
+        }
+      }
+    }
+  }
+  return false;
+}
+
 int SitesForComponent(int genus)
 {
   return 4 + (genus > 0 ? 4 + 16 * genus : 0);

@@ -58,6 +58,12 @@ CVTNUMERICS_EXPORT std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairRe
 CVTNUMERICS_EXPORT std::vector<int> SplitPinchedPoints(
   int numberOfPoints, std::vector<std::array<int, 3>>& triangles);
 
+/// Whether two of `points` (flat x, y, z) lie within `tolerance` of each other (coincident ones
+/// included), as a cleaning filter would merge them. May also answer true, at no more cost,
+/// where over 64 points crowd one grid cell a thousand tolerances wide: the caller then cleans
+/// as if there were. O(n log n).
+CVTNUMERICS_EXPORT bool HasPointsWithin(const std::vector<double>& points, double tolerance);
+
 /// Checks coordinates and density: "" or what is wrong (NaN, infinite or beyond 1e30
 /// coordinates, NaN, infinite, negative or all-zero density, wrong density size).
 CVTNUMERICS_EXPORT std::string CheckSurfaceMesh(const SurfaceMesh& mesh);

@@ -2034,6 +2034,46 @@ TEST(SurfaceMesh, ProjectorThatRemembersAnswersGivesTheSameAnswers)
   }
 }
 
+TEST(SurfaceMesh, HasPointsWithinFindsWhatBruteForceFinds)
+{
+  // Points at the corners of a unit lattice (the grid cells of the search are 1000 tolerances
+  // wide: 1 here) moved by up to 1.5 tolerances each way, so that close pairs straddle the
+  // cells' faces, edges and corners; each set's answer against all pairs compared directly.
+  const double tolerance = 1e-3;
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> corner(0, 4);
+  std::uniform_real_distribution<double> offset(-1.5 * tolerance, 1.5 * tolerance);
+  int withPair = 0, without = 0;
+  for (int trial = 0; trial < 400; ++trial)
+  {
+    std::vector<double> points;
+    for (int p = 0; p < 20; ++p)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        points.push_back(corner(rng) + offset(rng));
+      }
+    }
+    bool bruteForce = false;
+    for (size_t a = 0; a < points.size(); a += 3)
+    {
+      for (size_t b = a + 3; b < points.size(); b += 3)
+      {
+        bruteForce = bruteForce || cvt::Distance2(&points[a], &points[b]) <= tolerance * tolerance;
+      }
+    }
+    EXPECT_EQ(cvt::HasPointsWithin(points, tolerance), bruteForce) << "trial " << trial;
+    (bruteForce ? withPair : without) += 1;
+  }
+  EXPECT_GT(withPair, 50); // both answers are tested
+  EXPECT_GT(without, 50);
+  // Coincident points, with or without a tolerance; one point; all points at one place.
+  EXPECT_TRUE(cvt::HasPointsWithin({ 0, 0, 0, 1, 2, 3, 0, 0, 0 }, 0.0));
+  EXPECT_FALSE(cvt::HasPointsWithin({ 0, 0, 0, 1, 2, 3, 0, 0, 1e-12 }, 0.0));
+  EXPECT_FALSE(cvt::HasPointsWithin({ 1, 2, 3 }, 1.0));
+  EXPECT_TRUE(cvt::HasPointsWithin({ 1, 2, 3, 1, 2, 3 }, 0.0));
+}
+
 TEST(SurfaceMesh, CoveringPointsLieNearEveryPointOfTheSurface)
 {
   // A wide triangle (10 x 6), a sliver 10 long and 0.05 high, and a small one (0.4), measured
