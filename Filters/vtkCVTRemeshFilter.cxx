@@ -524,16 +524,20 @@ struct FidelityCandidate
 /// Sites added where the remesh and the input lie far apart (MeasureFidelity, farther than
 /// FarInputShare of the diagonal: input points at tips, ears and creases its flat triangles cut
 /// off, and under triangles bridging a fold), so that the remesh gets vertices there: in rounds,
-/// each trying all the far points and the farther half of them, each at the points and settled
-/// among their neighbours (SettleFarSites), and keeping the closest to the input (CloserThan) of
-/// those closer than the remesh before; at most FarInputSitesShare of the vertices in all. The
-/// halves: a sphere with four holes at 500 sites, 1.62 -> 1.16%. The settled sites: at 1000
-/// sites the two-way Hausdorff distance (mesh_energy.py's, % of the diagonal) goes homer 1.47 ->
-/// 1.03, lion 1.35 -> 1.00, 3torus 1.09 -> 0.92, bull 1.06 -> 0.90, armadillo 1.01 -> 0.87 (with
-/// the sites at the points alone, as before); a round costs up to four remeshes instead of one or
-/// two; their remeshes ask the input mostly what the one before asked, so it remembers the
-/// answers meanwhile (mpi at 1000 sites: 1.53 -> 1.37 s end to end, oblong 1.96 -> 1.50 s), and
-/// each is measured again only where it differs from the remesh before (mpi 1.00 -> 0.88 s).
+/// each trying all the far points and, where those gain nothing, the farther half of them, each at
+/// the points and settled among their neighbours (SettleFarSites), and keeping the closest to the
+/// input (CloserThan) of those closer than the remesh before; at most FarInputSitesShare of the
+/// vertices in all. The halves: a sphere with four holes at 500 sites, 1.62 -> 1.16%. Trying them
+/// after a gain too, as before, took 19% more remesh time on the 155 meshes at 1000 sites (35.8 ->
+/// 42.7 s; spool 0.53 -> 1.12 s end to end, oblong 0.64 -> 1.18) and changed 4 of them: 3torus 1.17
+/// -> 0.96% of the diagonal, pig 0.94 -> 1.00, oblong 1.66 -> 1.55, spool 1.90 -> 1.69
+/// (mesh_energy.py). The settled sites: at 1000 sites the two-way Hausdorff distance
+/// (mesh_energy.py's, % of the diagonal) goes homer 1.47 -> 1.03, lion 1.35 -> 1.00, 3torus 1.09 ->
+/// 0.92, bull 1.06 -> 0.90, armadillo 1.01 -> 0.87 (with the sites at the points alone, as before);
+/// a round costs up to four remeshes instead of one or two; their remeshes ask the input mostly
+/// what the one before asked, so it remembers the answers meanwhile (mpi at 1000 sites: 1.53 ->
+/// 1.37 s end to end, oblong 1.96 -> 1.50 s), and each is measured again only where it differs from
+/// the remesh before (mpi 1.00 -> 0.88 s).
 /// Tried and not taken (the 50 CGAL meshes with far points at 1000 sites, mesh_energy.py): a
 /// FarInputShare of 0.8% brought homer within 1% but took mpi over it; a FarInputSitesShare of
 /// 1.5%, or ending the rounds when one gains too little to reach FarInputShare in the rounds
@@ -609,9 +613,9 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
     bool found = false;
     for (size_t count : { all, all / 2 })
     {
-      if (count == 0 || (found && closest.Fidelity.FarPoints.empty()))
+      if (count == 0 || found)
       {
-        break; // within FarInputShare both ways: no need to look further
+        break; // the half are tried only where all the far points gained nothing
       }
       std::array<FidelityCandidate, 2> pair; // at the points, settled
       if (!addSites(count, false, pair[0]) || !addSites(count, true, pair[1]))
