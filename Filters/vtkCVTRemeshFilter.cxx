@@ -10,6 +10,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCleanPolyData.h"
+#include "vtkContourTriangulator.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -23,10 +24,11 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolygon.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticCleanPolyData.h"
 #include "vtkTable.h"
-#include "vtkTriangleFilter.h"
+#include "vtkTriangleStrip.h"
 #include "vtkVersionMacros.h" // for VTK_VERSION_CHECK
 
 #include <algorithm>
@@ -702,14 +704,149 @@ bool IsCleanTriangleMesh(vtkPolyData* input)
   return !cvt::HasPointsWithin(points, MergeTolerance * input->GetLength());
 }
 
+/// Splits polygons into triangles, its buffers kept from one polygon to the next. Split appends
+/// to `triangles` those of polygon `ids` (count > 3 of `points`): count - 2 on its corners. Ear
+/// cutting in the polygon's plane (vtkPolygon, as vtkTriangleFilter) comes first; where it leaves
+/// corners out, which left holes in the remesh's input, vtkContourTriangulator (which cleans the
+/// polygon first) is tried, then the widest triangles that face the polygon's way
+/// (cvt::TriangulatePolygonByAngles). Ear cutting left out corners of flat polygons with corners
+/// almost in line or deep notches: two pentagons of CGAL's double-torus-example.off and two
+/// hexagons of mpi.off (both closed, remeshed with 1 and 2 holes), and assimp's
+/// concave_polygon.obj, a ring cut open to one polygon of 66 corners that runs along its cut
+/// and back (17 of its 64 triangles). vtkContourTriangulator split all but one of mpi.off's
+/// hexagons, which it cleaned of a corner.
+class PolygonSplitter
+{
+  /// Corners beyond which the widest triangles, O(n^3), would take seconds.
+  static constexpr vtkIdType MaximumPolygonByAngles = 300;
+
+public:
+  void Split(vtkPoints* points, vtkIdType count, const vtkIdType* ids, vtkCellArray* triangles)
+  {
+    this->Corners.assign(ids, ids + count);
+    std::sort(this->Corners.begin(), this->Corners.end());
+    this->Corners.erase(
+      std::unique(this->Corners.begin(), this->Corners.end()), this->Corners.end());
+    this->Polygon->Initialize(static_cast<int>(count), ids, points);
+    this->Polygon->Triangulate(this->Local);
+    this->Triangles.clear();
+    for (vtkIdType i = 0; i < this->Local->GetNumberOfIds(); ++i)
+    {
+      this->Triangles.push_back(ids[this->Local->GetId(i)]);
+    }
+    if (!this->Covers(count))
+    {
+      this->Loop->SetNumberOfIds(count);
+      std::copy(ids, ids + count, this->Loop->begin());
+      vtkNew<vtkCellArray> cleaned;
+      vtkContourTriangulator::TriangulatePolygon(this->Loop, points, cleaned);
+      this->Triangles.clear();
+      vtkIdType size;
+      const vtkIdType* triangle;
+      for (cleaned->InitTraversal(); cleaned->GetNextCell(size, triangle);)
+      {
+        this->Triangles.insert(this->Triangles.end(), triangle, triangle + size);
+      }
+    }
+    if (!this->Covers(count))
+    {
+      std::vector<double> positions(3 * static_cast<size_t>(count));
+      for (vtkIdType i = 0; i < count; ++i)
+      {
+        points->GetPoint(ids[i], &positions[3 * static_cast<size_t>(i)]);
+      }
+      this->Triangles.clear();
+      if (count <= MaximumPolygonByAngles)
+      {
+        for (const auto& t : cvt::TriangulatePolygonByAngles(positions))
+        {
+          this->Triangles.insert(this->Triangles.end(), { ids[t[0]], ids[t[1]], ids[t[2]] });
+        }
+      }
+      else // a fan: no hole at least
+      {
+        for (vtkIdType i = 1; i + 1 < count; ++i)
+        {
+          this->Triangles.insert(this->Triangles.end(), { ids[0], ids[i], ids[i + 1] });
+        }
+      }
+    }
+    for (size_t t = 0; t + 2 < this->Triangles.size(); t += 3)
+    {
+      triangles->InsertNextCell(3, &this->Triangles[t]);
+    }
+  }
+
+private:
+  /// Whether Triangles are count - 2 using every corner.
+  bool Covers(vtkIdType count)
+  {
+    if (this->Triangles.size() != 3 * static_cast<size_t>(count - 2))
+    {
+      return false;
+    }
+    this->Used.assign(this->Triangles.begin(), this->Triangles.end());
+    std::sort(this->Used.begin(), this->Used.end());
+    this->Used.erase(std::unique(this->Used.begin(), this->Used.end()), this->Used.end());
+    return this->Used == this->Corners;
+  }
+
+  vtkNew<vtkPolygon> Polygon;
+  vtkNew<vtkIdList> Local; // corner indices of the ear cutting's triangles
+  vtkNew<vtkIdList> Loop;
+  std::vector<vtkIdType> Corners, Triangles, Used; // Corners sorted, each once
+};
+
+/// The triangles of `input`'s polygons (PolygonSplitter) and strips, on its points and point
+/// data; vertices and lines are dropped.
+vtkSmartPointer<vtkPolyData> SplitIntoTriangles(vtkPolyData* input)
+{
+  vtkPoints* points = input->GetPoints();
+  vtkNew<vtkCellArray> triangles;
+  triangles->AllocateEstimate(2 * input->GetNumberOfPolys(), 3);
+  PolygonSplitter splitter;
+  vtkCellArray* polys = input->GetPolys();
+  vtkIdType count;
+  const vtkIdType* ids;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    if (count == 3)
+    {
+      triangles->InsertNextCell(3, ids);
+    }
+    else if (count > 3)
+    {
+      splitter.Split(points, count, ids, triangles);
+    }
+  }
+  vtkCellArray* strips = input->GetStrips();
+  for (strips->InitTraversal(); strips->GetNextCell(count, ids);)
+  {
+    vtkTriangleStrip::DecomposeStrip(static_cast<int>(count), ids, triangles);
+  }
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->SetPoints(points);
+  output->GetPointData()->ShallowCopy(input->GetPointData());
+  output->SetPolys(triangles);
+  return output;
+}
+
 /// The cleaned, triangulated input (coincident points merged, polygons and strips split).
 vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
 {
+  auto output = vtkSmartPointer<vtkPolyData>::New();
   if (IsCleanTriangleMesh(input))
   {
-    auto output = vtkSmartPointer<vtkPolyData>::New();
     output->ShallowCopy(input);
     return output;
+  }
+  // Split before merging: the merge drops a polygon's repeated corners, which cuts a polygon
+  // that touches itself (a ring cut open) into a wrong one.
+  vtkSmartPointer<vtkPolyData> split = input;
+  if (input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips() != 0 ||
+    input->GetPolys()->IsHomogeneous() != 3)
+  {
+    split = SplitIntoTriangles(input);
   }
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
   vtkNew<vtkStaticCleanPolyData> merge; // threaded, and the same whatever the threads' timing
@@ -721,26 +858,13 @@ vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
   // triangles).
   vtkNew<vtkCleanPolyData> merge;
 #endif
-  merge->SetInputData(input);
+  merge->SetInputData(split);
   merge->SetTolerance(MergeTolerance);
   merge->ConvertLinesToPointsOff();
   merge->ConvertPolysToLinesOff();
   merge->ConvertStripsToPolysOff();
   merge->Update();
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  vtkPolyData* merged = merge->GetOutput();
-  if (merged->GetNumberOfVerts() + merged->GetNumberOfLines() + merged->GetNumberOfStrips() == 0 &&
-    merged->GetPolys()->IsHomogeneous() == 3)
-  {
-    output->ShallowCopy(merged); // triangles only already (most meshes): nothing to split
-    return output;
-  }
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(merged);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  triangles->Update();
-  output->ShallowCopy(triangles->GetOutput());
+  output->ShallowCopy(merge->GetOutput());
   return output;
 }
 

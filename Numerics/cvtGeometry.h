@@ -1,12 +1,15 @@
 // Private to CVT::Numerics: small 3D vector helpers on plain double[3] arrays, shared by the
-// restricted Voronoi diagram, the geometry-image code and the remesh.
+// restricted Voronoi diagram, the geometry-image code, the input's cleaning and the remesh.
 #ifndef cvtGeometry_h
 #define cvtGeometry_h
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace cvt
 {
@@ -162,6 +165,84 @@ inline void ClosestPointOnTriangle(const double* p, const double* a, const doubl
   {
     point[k] = a[k] + ab[k] * v + ac[k] * w;
   }
+}
+
+/// The cosine of the corner at a of triangle a b d; 1 (a corner of 0) when an edge has no length.
+inline double CornerCosine(const double* a, const double* b, const double* d)
+{
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+  const double norms = std::sqrt(
+    (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+  return norms > 0.0 ? std::clamp((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / norms, -1.0, 1.0)
+                     : 1.0;
+}
+
+/// The angles (radians) of triangle p0 p1 p2 at its three corners.
+inline void CornerAngles(const double* p0, const double* p1, const double* p2, double angle[3])
+{
+  angle[0] = std::acos(CornerCosine(p0, p1, p2));
+  angle[1] = std::acos(CornerCosine(p1, p2, p0));
+  angle[2] = std::acos(CornerCosine(p2, p0, p1));
+}
+
+/// Triangulates a loop of at most a few dozen vertices (a hole, a polygon), in the loop's
+/// orientation, so that its thinnest triangle is as wide as it can be: the classic dynamic
+/// programme over sub-polygons, O(n^3). `position(v)` gives vertex v's point; diagonals for
+/// which `isEdge(a, b)` holds (edges the mesh has already), and triangles a b c (in the loop's
+/// orientation) for which `fits(a, b, c)` does not, are taken only where nothing else fits.
+template<class Position, class IsEdge, class Fits>
+std::vector<std::array<int, 3>> TriangulateLoop(
+  const std::vector<int>& loop, const Position& position, const IsEdge& isEdge, const Fits& fits)
+{
+  const int n = static_cast<int>(loop.size());
+  // best[i][j]: the largest smallest angle of a triangulation of loop[i..j]; split[i][j]: its apex.
+  std::vector<double> best(static_cast<size_t>(n * n), 10.0);
+  std::vector<int> split(static_cast<size_t>(n * n), -1);
+  const auto at = [n](int i, int j) { return static_cast<size_t>(i * n + j); };
+  for (int length = 2; length < n; ++length)
+  {
+    for (int i = 0; i + length < n; ++i)
+    {
+      const int j = i + length;
+      best[at(i, j)] = -1e300;
+      for (int k = i + 1; k < j; ++k)
+      {
+        double angle[3];
+        CornerAngles(position(loop[i]), position(loop[k]), position(loop[j]), angle);
+        const double here = std::min(
+          { *std::min_element(angle, angle + 3) - (fits(loop[i], loop[k], loop[j]) ? 0.0 : 100.0),
+            k - i > 1 ? best[at(i, k)] : 10.0, j - k > 1 ? best[at(k, j)] : 10.0 });
+        if (here > best[at(i, j)])
+        {
+          best[at(i, j)] = here;
+          split[at(i, j)] = k;
+        }
+      }
+      if (j - i < n - 1 && isEdge(loop[i], loop[j]))
+      {
+        best[at(i, j)] -= 20.0;
+      }
+    }
+  }
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::pair<int, int>> pending = { { 0, n - 1 } };
+  while (!pending.empty())
+  {
+    const auto [i, j] = pending.back();
+    pending.pop_back();
+    const int k = split[at(i, j)];
+    triangles.push_back({ loop[i], loop[k], loop[j] });
+    if (k - i > 1)
+    {
+      pending.emplace_back(i, k);
+    }
+    if (j - k > 1)
+    {
+      pending.emplace_back(k, j);
+    }
+  }
+  return triangles;
 }
 
 } // namespace cvt

@@ -43,25 +43,6 @@ constexpr double ThinCorner = 30.0 * 3.14159265358979323846 / 180.0;
 /// remesh should keep.
 constexpr double FitCorner = 27.0 * 3.14159265358979323846 / 180.0;
 
-/// The cosine of the corner at a of triangle a b d; 1 (a corner of 0) when an edge has no length.
-double CornerCosine(const double* a, const double* b, const double* d)
-{
-  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-  const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-  const double norms = std::sqrt(
-    (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
-  return norms > 0.0 ? std::clamp((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / norms, -1.0, 1.0)
-                     : 1.0;
-}
-
-/// The angles (radians) of triangle p0 p1 p2 at its three corners.
-void CornerAngles(const double* p0, const double* p1, const double* p2, double angle[3])
-{
-  angle[0] = std::acos(CornerCosine(p0, p1, p2));
-  angle[1] = std::acos(CornerCosine(p1, p2, p0));
-  angle[2] = std::acos(CornerCosine(p2, p0, p1));
-}
-
 /// The smallest corner angle (radians) of triangle p0 p1 p2: that of the largest cosine, as acos
 /// decreases (one acos instead of CornerAngles' three, in the remesh's most frequent test).
 double SmallestCorner(const double* p0, const double* p1, const double* p2)
@@ -2062,63 +2043,6 @@ int CollapseTowardsValenceSix(Remesh& remesh, const std::vector<char>& pinned,
   return collapsed;
 }
 
-/// Triangulates a small hole (a loop of at most a few dozen vertices, in the loop's
-/// orientation) so that its thinnest triangle is as wide as it can be: the classic dynamic
-/// programme over sub-polygons, O(n^3). `position(v)` gives vertex v's point; diagonals for
-/// which `isEdge(a, b)` holds (edges the mesh has already) are taken only where nothing else fits.
-template<class Position, class IsEdge>
-std::vector<std::array<int, 3>> TriangulateHole(
-  const std::vector<int>& loop, const Position& position, const IsEdge& isEdge)
-{
-  const int n = static_cast<int>(loop.size());
-  // best[i][j]: the largest smallest angle of a triangulation of loop[i..j]; split[i][j]: its apex.
-  std::vector<double> best(static_cast<size_t>(n * n), 10.0);
-  std::vector<int> split(static_cast<size_t>(n * n), -1);
-  const auto at = [n](int i, int j) { return static_cast<size_t>(i * n + j); };
-  for (int length = 2; length < n; ++length)
-  {
-    for (int i = 0; i + length < n; ++i)
-    {
-      const int j = i + length;
-      best[at(i, j)] = -1e300;
-      for (int k = i + 1; k < j; ++k)
-      {
-        double angle[3];
-        CornerAngles(position(loop[i]), position(loop[k]), position(loop[j]), angle);
-        const double here = std::min({ *std::min_element(angle, angle + 3),
-          k - i > 1 ? best[at(i, k)] : 10.0, j - k > 1 ? best[at(k, j)] : 10.0 });
-        if (here > best[at(i, j)])
-        {
-          best[at(i, j)] = here;
-          split[at(i, j)] = k;
-        }
-      }
-      if (j - i < n - 1 && isEdge(loop[i], loop[j]))
-      {
-        best[at(i, j)] -= 20.0;
-      }
-    }
-  }
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<std::pair<int, int>> pending = { { 0, n - 1 } };
-  while (!pending.empty())
-  {
-    const auto [i, j] = pending.back();
-    pending.pop_back();
-    const int k = split[at(i, j)];
-    triangles.push_back({ loop[i], loop[k], loop[j] });
-    if (k - i > 1)
-    {
-      pending.emplace_back(i, k);
-    }
-    if (j - k > 1)
-    {
-      pending.emplace_back(k, j);
-    }
-  }
-  return triangles;
-}
-
 /// Vertices at the same place (the copies of a split pinched vertex, parts of one cell pinned
 /// to the same corner) would be merged again by any point-merging filter downstream (VTK's
 /// cleaning), undoing the split: each is moved a tenth of the way to the centroid of its own
@@ -2418,7 +2342,8 @@ Remesh ConnectRemesh(
     {
       continue;
     }
-    for (const auto& t : TriangulateHole(loop, position, isEdge))
+    for (const auto& t :
+      TriangulateLoop(loop, position, isEdge, [](int, int, int) { return true; }))
     {
       kept.push_back(t);
     }

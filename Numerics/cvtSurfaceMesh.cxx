@@ -92,6 +92,39 @@ std::string MeshRepairReport::Summary() const
   return text.str();
 }
 
+std::vector<std::array<int, 3>> TriangulatePolygonByAngles(const std::vector<double>& corners)
+{
+  if (corners.size() < 9)
+  {
+    return {};
+  }
+  std::vector<int> loop(corners.size() / 3);
+  std::iota(loop.begin(), loop.end(), 0);
+  const auto position = [&corners](int corner)
+  { return &corners[3 * static_cast<size_t>(corner)]; };
+  // The polygon's normal (Newell's): triangles facing its way cover it once where they all do
+  // (their signed areas add up to its own), so those facing the other way (across a notch) are
+  // taken only where nothing else fits.
+  double normal[3] = { 0.0, 0.0, 0.0 };
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    double edge[3];
+    Cross(position(loop[i]), position(loop[(i + 1) % loop.size()]), edge);
+    for (int c = 0; c < 3; ++c)
+    {
+      normal[c] += edge[c];
+    }
+  }
+  return TriangulateLoop(
+    loop, position, [](int, int) { return false; },
+    [&](int a, int b, int c)
+    {
+      double n[3];
+      TriangleNormal(position(a), position(b), position(c), n);
+      return Dot(n, normal) > 0.0;
+    });
+}
+
 std::string CheckSurfaceMesh(const SurfaceMesh& mesh)
 {
   constexpr double MaximumCoordinate = 1e30;

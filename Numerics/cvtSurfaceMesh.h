@@ -64,6 +64,13 @@ CVTNUMERICS_EXPORT std::vector<int> SplitPinchedPoints(
 /// as if there were. O(n log n).
 CVTNUMERICS_EXPORT bool HasPointsWithin(const std::vector<double>& points, double tolerance);
 
+/// A triangulation of the polygon with `corners` (x, y, z each, in order): n - 2 triangles of
+/// corner indices, in the polygon's orientation, whose thinnest triangle is as wide as it can be
+/// among those that all face the polygon's normal (which cover a flat polygon once), else among
+/// all. For polygons ear cutting leaves corners out of (corners almost in line). O(n^3).
+CVTNUMERICS_EXPORT std::vector<std::array<int, 3>> TriangulatePolygonByAngles(
+  const std::vector<double>& corners);
+
 /// Checks coordinates and density: "" or what is wrong (NaN, infinite or beyond 1e30
 /// coordinates, NaN, infinite, negative or all-zero density, wrong density size).
 CVTNUMERICS_EXPORT std::string CheckSurfaceMesh(const SurfaceMesh& mesh);

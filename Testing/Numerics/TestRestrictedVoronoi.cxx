@@ -1874,6 +1874,93 @@ TEST(SurfaceMesh, TopologyCountsGenusAndLoops)
   EXPECT_EQ(t.EulerCharacteristic, 0);
 }
 
+// The last resort for polygons that ear cutting leaves holes in: mpi.off's hexagon, whose corners
+// almost lie in a line, with a deep notch, and a thin hexagon bent out of its plane. Each becomes
+// n - 2 triangles in the polygon's orientation (each of its edges in one, the same way round), all
+// facing its normal (so the flat one's are its area, once), whose smallest angle is at least that
+// of each fan from one corner that faces it too (the programme maximises it over all that do).
+TEST(SurfaceMesh, PolygonsAreSplitIntoTheirWidestTriangles)
+{
+  const std::vector<std::vector<double>> polygons = {
+    { -10.0219, -0.926781, -0.926781, -10, 10, 10, -9.99992, 10.0401, -9.99992, -10.008, 6.02406,
+      -10.008, -10.008, 6.02406, 5.02005, -10.02, 0, -2.00802 },
+    { 0, 0, 0, 3, 0, 0.4, 6, 0, 0, 6, 1, 0, 3, 1, -0.4, 0, 1, 0 },
+  };
+  for (size_t p = 0; p < polygons.size(); ++p)
+  {
+    const std::vector<double>& corners = polygons[p];
+    const int n = static_cast<int>(corners.size() / 3);
+    double normal[3] = { 0.0, 0.0, 0.0 }; // Newell's: twice the vector area
+    for (int i = 0; i < n; ++i)
+    {
+      double edge[3];
+      cvt::Cross(&corners[3 * i], &corners[3 * ((i + 1) % n)], edge);
+      for (int c = 0; c < 3; ++c)
+      {
+        normal[c] += edge[c];
+      }
+    }
+    // The smallest angle of `triangles`, and whether all face the normal; their summed area.
+    const auto measure = [&](const std::vector<std::array<int, 3>>& triangles, bool& facing)
+    {
+      double least = 10.0, area = 0.0;
+      facing = true;
+      for (const auto& t : triangles)
+      {
+        double angle[3], n3[3];
+        const double *a = &corners[3 * t[0]], *b = &corners[3 * t[1]], *c = &corners[3 * t[2]];
+        cvt::CornerAngles(a, b, c, angle);
+        least = std::min({ least, angle[0], angle[1], angle[2] });
+        cvt::TriangleNormal(a, b, c, n3);
+        facing = facing && cvt::Dot(n3, normal) > 0.0;
+        area += 0.5 * std::sqrt(cvt::Dot(n3, n3));
+      }
+      return std::make_pair(least, area);
+    };
+    const std::vector<std::array<int, 3>> triangles = cvt::TriangulatePolygonByAngles(corners);
+    ASSERT_EQ(static_cast<int>(triangles.size()), n - 2);
+    std::map<std::pair<int, int>, int> directed;
+    for (const auto& t : triangles)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        ++directed[std::make_pair(t[k], t[(k + 1) % 3])];
+      }
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      EXPECT_EQ(directed[std::make_pair(i, (i + 1) % n)], 1) << "edge " << i;
+      EXPECT_EQ(directed[std::make_pair((i + 1) % n, i)], 0) << "edge " << i;
+    }
+    bool facing = false;
+    const auto [least, area] = measure(triangles, facing);
+    EXPECT_TRUE(facing);
+    if (p == 0)
+    {
+      const double exact = 0.5 * std::sqrt(cvt::Dot(normal, normal));
+      EXPECT_NEAR(area, exact, 1e-9 * exact);
+    }
+    int fansFacing = 0;
+    for (int apex = 0; apex < n; ++apex)
+    {
+      std::vector<std::array<int, 3>> fan;
+      for (int k = 1; k + 1 < n; ++k)
+      {
+        fan.push_back({ apex, (apex + k) % n, (apex + k + 1) % n });
+      }
+      bool fanFacing = false;
+      const double fanLeast = measure(fan, fanFacing).first;
+      if (fanFacing)
+      {
+        ++fansFacing;
+        EXPECT_GE(least, fanLeast - 1e-12) << "fan from " << apex;
+      }
+    }
+    EXPECT_GT(fansFacing, 0);
+  }
+  EXPECT_TRUE(cvt::TriangulatePolygonByAngles({ 0, 0, 0, 1, 0, 0 }).empty());
+}
+
 TEST(SurfaceMesh, ProjectorFindsTheNearestPointExactly)
 {
   // A sphere of small triangles beside a plane of two large ones: the nearest centroids of a
