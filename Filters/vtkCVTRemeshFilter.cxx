@@ -705,69 +705,71 @@ bool IsCleanTriangleMesh(vtkPolyData* input)
 }
 
 /// Splits polygons into triangles, its buffers kept from one polygon to the next. Split appends
-/// to `triangles` those of polygon `ids` (count > 3 of `points`): count - 2 on its corners. Ear
-/// cutting in the polygon's plane (vtkPolygon, as vtkTriangleFilter) comes first; where it leaves
-/// corners out, which left holes in the remesh's input, vtkContourTriangulator (which cleans the
-/// polygon first) is tried, then the widest triangles that face the polygon's way
-/// (cvt::TriangulatePolygonByAngles). Ear cutting left out corners of flat polygons with corners
-/// almost in line or deep notches: two pentagons of CGAL's double-torus-example.off and two
-/// hexagons of mpi.off (both closed, remeshed with 1 and 2 holes), and assimp's
-/// concave_polygon.obj, a ring cut open to one polygon of 66 corners that runs along its cut
-/// and back (17 of its 64 triangles). vtkContourTriangulator split all but one of mpi.off's
-/// hexagons, which it cleaned of a corner.
+/// to `triangles` those of polygon `ids` (count > 3 of `points`): count - 2 on its corners. Those
+/// of up to SmallPolygon corners get their widest triangles that face the polygon's way
+/// (cvt::TriangulatePolygonByAngles), which cover a flat one once: 500,000 quads took 1.5 s by
+/// ear cutting, 2.0 s less in all the prepare stage. Larger ones are ear cut in their plane
+/// (vtkPolygon, as vtkTriangleFilter); where that leaves corners out, which left holes in the
+/// remesh's input, vtkContourTriangulator (which cleans the polygon first) is tried, then the
+/// widest triangles. Ear cutting left out corners of flat polygons with corners almost in line or
+/// deep notches: two pentagons of CGAL's double-torus-example.off and two hexagons of mpi.off
+/// (both closed, remeshed with 1 and 2 holes), and assimp's concave_polygon.obj, a ring cut open
+/// to one polygon of 66 corners that runs along its cut and back (17 of its 64 triangles).
+/// vtkContourTriangulator split all but one of mpi.off's hexagons, which it cleaned of a corner.
 class PolygonSplitter
 {
+  /// Corners up to which the widest triangles come first (quads above all).
+  static constexpr vtkIdType SmallPolygon = 8;
   /// Corners beyond which the widest triangles, O(n^3), would take seconds.
   static constexpr vtkIdType MaximumPolygonByAngles = 300;
 
 public:
   void Split(vtkPoints* points, vtkIdType count, const vtkIdType* ids, vtkCellArray* triangles)
   {
-    this->Corners.assign(ids, ids + count);
-    std::sort(this->Corners.begin(), this->Corners.end());
-    this->Corners.erase(
-      std::unique(this->Corners.begin(), this->Corners.end()), this->Corners.end());
-    this->Polygon->Initialize(static_cast<int>(count), ids, points);
-    this->Polygon->Triangulate(this->Local);
     this->Triangles.clear();
-    for (vtkIdType i = 0; i < this->Local->GetNumberOfIds(); ++i)
+    if (count <= SmallPolygon)
     {
-      this->Triangles.push_back(ids[this->Local->GetId(i)]);
+      this->SplitByAngles(points, count, ids);
     }
-    if (!this->Covers(count))
+    else
     {
-      this->Loop->SetNumberOfIds(count);
-      std::copy(ids, ids + count, this->Loop->begin());
-      vtkNew<vtkCellArray> cleaned;
-      vtkContourTriangulator::TriangulatePolygon(this->Loop, points, cleaned);
-      this->Triangles.clear();
-      vtkIdType size;
-      const vtkIdType* triangle;
-      for (cleaned->InitTraversal(); cleaned->GetNextCell(size, triangle);)
+      this->Corners.assign(ids, ids + count);
+      std::sort(this->Corners.begin(), this->Corners.end());
+      this->Corners.erase(
+        std::unique(this->Corners.begin(), this->Corners.end()), this->Corners.end());
+      this->Polygon->Initialize(static_cast<int>(count), ids, points);
+      this->Polygon->Triangulate(this->Local);
+      for (vtkIdType i = 0; i < this->Local->GetNumberOfIds(); ++i)
       {
-        this->Triangles.insert(this->Triangles.end(), triangle, triangle + size);
+        this->Triangles.push_back(ids[this->Local->GetId(i)]);
       }
-    }
-    if (!this->Covers(count))
-    {
-      std::vector<double> positions(3 * static_cast<size_t>(count));
-      for (vtkIdType i = 0; i < count; ++i)
+      if (!this->Covers(count))
       {
-        points->GetPoint(ids[i], &positions[3 * static_cast<size_t>(i)]);
-      }
-      this->Triangles.clear();
-      if (count <= MaximumPolygonByAngles)
-      {
-        for (const auto& t : cvt::TriangulatePolygonByAngles(positions))
+        this->Loop->SetNumberOfIds(count);
+        std::copy(ids, ids + count, this->Loop->begin());
+        vtkNew<vtkCellArray> cleaned;
+        vtkContourTriangulator::TriangulatePolygon(this->Loop, points, cleaned);
+        this->Triangles.clear();
+        vtkIdType size;
+        const vtkIdType* triangle;
+        for (cleaned->InitTraversal(); cleaned->GetNextCell(size, triangle);)
         {
-          this->Triangles.insert(this->Triangles.end(), { ids[t[0]], ids[t[1]], ids[t[2]] });
+          this->Triangles.insert(this->Triangles.end(), triangle, triangle + size);
         }
       }
-      else // a fan: no hole at least
+      if (!this->Covers(count))
       {
-        for (vtkIdType i = 1; i + 1 < count; ++i)
+        this->Triangles.clear();
+        if (count <= MaximumPolygonByAngles)
         {
-          this->Triangles.insert(this->Triangles.end(), { ids[0], ids[i], ids[i + 1] });
+          this->SplitByAngles(points, count, ids);
+        }
+        else // a fan: no hole at least
+        {
+          for (vtkIdType i = 1; i + 1 < count; ++i)
+          {
+            this->Triangles.insert(this->Triangles.end(), { ids[0], ids[i], ids[i + 1] });
+          }
         }
       }
     }
@@ -778,6 +780,19 @@ public:
   }
 
 private:
+  void SplitByAngles(vtkPoints* points, vtkIdType count, const vtkIdType* ids)
+  {
+    this->Positions.resize(3 * static_cast<size_t>(count));
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      points->GetPoint(ids[i], &this->Positions[3 * static_cast<size_t>(i)]);
+    }
+    for (const auto& t : cvt::TriangulatePolygonByAngles(this->Positions))
+    {
+      this->Triangles.insert(this->Triangles.end(), { ids[t[0]], ids[t[1]], ids[t[2]] });
+    }
+  }
+
   /// Whether Triangles are count - 2 using every corner.
   bool Covers(vtkIdType count)
   {
@@ -795,6 +810,7 @@ private:
   vtkNew<vtkIdList> Local; // corner indices of the ear cutting's triangles
   vtkNew<vtkIdList> Loop;
   std::vector<vtkIdType> Corners, Triangles, Used; // Corners sorted, each once
+  std::vector<double> Positions;
 };
 
 /// The triangles of `input`'s polygons (PolygonSplitter) and strips, on its points and point

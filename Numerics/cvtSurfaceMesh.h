@@ -67,7 +67,7 @@ CVTNUMERICS_EXPORT bool HasPointsWithin(const std::vector<double>& points, doubl
 /// A triangulation of the polygon with `corners` (x, y, z each, in order): n - 2 triangles of
 /// corner indices, in the polygon's orientation, whose thinnest triangle is as wide as it can be
 /// among those that all face the polygon's normal (which cover a flat polygon once), else among
-/// all. For polygons ear cutting leaves corners out of (corners almost in line). O(n^3).
+/// all. O(n^3): for small polygons, and those ear cutting leaves corners out of.
 CVTNUMERICS_EXPORT std::vector<std::array<int, 3>> TriangulatePolygonByAngles(
   const std::vector<double>& corners);
 

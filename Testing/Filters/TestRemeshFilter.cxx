@@ -715,7 +715,7 @@ TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)
     EXPECT_NEAR(interpolated->GetTuple1(v), p[0], 1e-9);
     const double r = std::hypot(p[0], p[1]);
     EXPECT_LE(r, 1.0 + 1e-9);
-    EXPECT_GE(r, 0.3 * std::cos(3.14159265 / 72) - 1e-9);
+    EXPECT_GE(r, 0.3 * std::cos(3.14159265 / 72) - 1e-7); // the disk's points are floats
     onCircles += std::abs(r - 1.0) < 1e-3 || std::abs(r - 0.3) < 1e-2;
   }
   EXPECT_GT(onCircles, 30);
