@@ -668,18 +668,26 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
 /// rounding (sin 2 pi is not 0), which would leave a slit.
 constexpr double MergeTolerance = 1e-9;
 
+/// Whether `input` has triangles and no other cells (no vertices, lines, strips or other
+/// polygons).
+bool HasTrianglesOnly(vtkPolyData* input)
+{
+  vtkCellArray* polys = input->GetPolys();
+  return input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips() == 0 &&
+    polys && polys->IsHomogeneous() == 3; // 0 when there are none
+}
+
 /// Whether cleaning would leave `input` as it is: triangles only, each of three points, every
 /// point in one, none within MergeTolerance of another. Most meshes (files whose readers merged
 /// their points) are; the check costs a tenth of the cleaning (vtkStaticCleanPolyData: 1.6 s on
 /// 1.1 million triangles).
 bool IsCleanTriangleMesh(vtkPolyData* input)
 {
-  vtkCellArray* polys = input->GetPolys();
-  if (input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips() != 0 ||
-    !polys || polys->GetNumberOfCells() == 0 || polys->IsHomogeneous() != 3)
+  if (!HasTrianglesOnly(input))
   {
     return false;
   }
+  vtkCellArray* polys = input->GetPolys();
   const vtkIdType pointCount = input->GetNumberOfPoints();
   std::vector<char> used(static_cast<size_t>(pointCount), 0);
   vtkNew<vtkIdList> ids;
@@ -858,12 +866,8 @@ vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
   }
   // Split before merging: the merge drops a polygon's repeated corners, which cuts a polygon
   // that touches itself (a ring cut open) into a wrong one.
-  vtkSmartPointer<vtkPolyData> split = input;
-  if (input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips() != 0 ||
-    input->GetPolys()->IsHomogeneous() != 3)
-  {
-    split = SplitIntoTriangles(input);
-  }
+  const vtkSmartPointer<vtkPolyData> split =
+    HasTrianglesOnly(input) ? vtkSmartPointer<vtkPolyData>(input) : SplitIntoTriangles(input);
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
   vtkNew<vtkStaticCleanPolyData> merge; // threaded, and the same whatever the threads' timing
   merge->SetMergingArray(nullptr);      // 9.2's constructor allocates a name it never frees
