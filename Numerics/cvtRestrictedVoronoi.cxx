@@ -1567,7 +1567,9 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         dual.SurfaceTriangles[i], &dual.SurfacePoints[3 * i], &dual.SurfaceBarycentric[3 * i]);
       dual.Parts[i] = d.TriangleParts[dual.SurfaceTriangles[i]];
     }
-    dual.Pinned[i] = boundaryRank[i] > 0;
+    // A cell whose part of the border has no length (a sliver's edge, a point) has no border
+    // point to be pinned to.
+    dual.Pinned[i] = boundaryRank[i] > 0 && dual.BoundaryTriangles[i] >= 0;
     if (dual.Pinned[i])
     {
       d.Barycentric(
