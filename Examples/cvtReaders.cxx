@@ -2,6 +2,7 @@
 
 #include "cvtErrors.h"
 
+#include "vtkCVTOBJReader.h"
 #include "vtkCVTOFFReader.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -11,7 +12,6 @@
 #include "vtkImageReader2Factory.h"
 #include "vtkImageShiftScale.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -276,14 +276,14 @@ struct MeshFormat
 {
   const char* Extension;
   vtkSmartPointer<vtkAlgorithm> (*Open)(const std::string& path);
-  /// Read in a child first (ProbeReader). Our own OFF reader is not: the fuzz tests run it
-  /// in-process on damaged files and it refuses each with an error, and the probe would cost
-  /// a fork and the hand-over.
+  /// Read in a child first (ProbeReader). Our own OBJ and OFF readers are not: the fuzz tests
+  /// run them in-process on damaged files and they refuse each with an error, and the probe
+  /// would cost a fork and the hand-over.
   bool Probe;
 };
 const MeshFormat MeshFormats[] = { { "vtp", Open<vtkXMLPolyDataReader>, true },
   { "vtk", Open<vtkPolyDataReader>, true }, { "stl", Open<vtkSTLReader>, true },
-  { "ply", Open<vtkPLYReader>, true }, { "obj", Open<vtkOBJReader>, true },
+  { "ply", Open<vtkPLYReader>, true }, { "obj", Open<vtkCVTOBJReader>, false },
   { "off", Open<vtkCVTOFFReader>, false } };
 
 } // namespace
@@ -402,7 +402,7 @@ vtkSmartPointer<vtkAlgorithm> MeshReader(const Options& options)
   {
     Fail("--input '" + options.Input + "' has an unknown type; use .vtp .vtk .stl .ply .obj .off");
   }
-  // VTK's OBJ reader takes a UTF-16 file for one line too long to read, ours for a bad header.
+  // Our readers would take a UTF-16 file for one without vertices (OBJ) or a bad header (OFF).
   if (ext == "obj" || ext == "off")
   {
     std::ifstream in(options.Input, std::ios::binary);

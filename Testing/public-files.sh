@@ -17,8 +17,7 @@ fi
 # Files that are not surfaces or cannot be read: refused, each with its own message.
 refused=(
   OBJ/box_UTF16BE.obj     # UTF-16 text
-  OBJ/empty_mat.obj       # 'usemtl' without a name: VTK's OBJ reader stops there
-  OBJ/number_formats.obj  # one triangle of zero area
+  OBJ/number_formats.obj  # a malformed number ('3.1+e2', line 11)
   OBJ/point_cloud.obj OBJ/testpoints.obj PLY/points.ply PLY/pond.0.ply # points only
   OBJ/testline.obj        # lines only
   OFF/invalid.off         # a face of no vertices

@@ -7,7 +7,7 @@ from vtkmodules.vtkCommonDataModel import vtkDataObject
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 
 from cvt.cvtFilters import vtkCVTImageFilter
-from cvt.cvtIO import vtkCVTOFFReader
+from cvt.cvtIO import vtkCVTOBJReader, vtkCVTOFFReader
 from cvt.cvtRendering import vtkCVTOpenGLEngine, vtkCVTSceneRenderer
 
 source = vtkRTAnalyticSource()
@@ -30,6 +30,7 @@ picture = vtkCVTSceneRenderer().Render(cvt.GetLabelsOutput(), sites)
 assert picture is not None and picture.GetDimensions()[0] == 800
 assert "Context" in str(vtkCVTOpenGLEngine())
 assert "FileName: (none)" in str(vtkCVTOFFReader())
+assert "FileName: (none)" in str(vtkCVTOBJReader())
 
 messages = vtkStringOutputWindow()
 vtkOutputWindow.SetInstance(messages)
