@@ -112,6 +112,38 @@ void ExpectPyramid(const Read& read, int pointType = VTK_DOUBLE)
   EXPECT_EQ(CellsOf(read.Mesh->GetPolys()), PyramidFaces);
 }
 
+/// A malformed file and what its error must say.
+struct Case
+{
+  std::string Text, Expected;
+};
+
+/// Each case, a missing file and no file name are refused by Reader with that error and an
+/// empty output.
+template<typename Reader>
+void ExpectRefusals(const std::vector<Case>& cases, const std::string& extension)
+{
+  for (const Case& c : cases)
+  {
+    TextFile file(c.Text, extension);
+    const Read read = ReadWith<Reader>(file.Path);
+    EXPECT_EQ(read.Status, 0) << c.Text;
+    EXPECT_NE(read.Errors.find(c.Expected), std::string::npos)
+      << "file:\n"
+      << c.Text << "\nerror: " << read.Errors;
+    EXPECT_EQ(read.Mesh->GetNumberOfPoints(), 0) << c.Text;
+    EXPECT_EQ(read.Mesh->GetNumberOfCells(), 0) << c.Text;
+  }
+  const Read missing = ReadWith<Reader>(testing::TempDir() + "no_such_file." + extension);
+  EXPECT_EQ(missing.Status, 0);
+  EXPECT_NE(missing.Errors.find("Cannot open"), std::string::npos) << missing.Errors;
+  vtkNew<Reader> unnamed;
+  vtkNew<cvttest::Messages> messages;
+  unnamed->AddObserver(vtkCommand::ErrorEvent, messages);
+  EXPECT_EQ(unnamed->GetExecutive()->Update(), 0);
+  EXPECT_NE(messages->Errors.find("No FileName"), std::string::npos) << messages->Errors;
+}
+
 } // namespace
 
 TEST(OFFReader, ReadsPlainOffWithCommentsAndCountsOnTheirOwnLine)
@@ -142,11 +174,7 @@ TEST(OFFReader, MalformedFilesAreErrorsNamingTheLine)
 {
   const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0.7\n";
   const std::string faces = "4 0 1 2 3\n3 0 4 1\n3 1 4 2\n3 2 4 3\n3 3 4 0\n";
-  struct Case
-  {
-    std::string Text, Expected;
-  };
-  const Case cases[] = {
+  const std::vector<Case> cases = {
     { "", "line 0: the file is empty" },
     { "OFF BINARY\n", "binary OFF is not read" },
     { "4OFF\n5 5 0\n", "other than 3 dimensions" },
@@ -164,25 +192,7 @@ TEST(OFFReader, MalformedFilesAreErrorsNamingTheLine)
     { "OFF\n5 5 0\n" + vertices + "4 0 1 2 5\n" + faces, "names vertex '5', which is not one" },
     { "OFF\n5 5 0\n" + vertices + "4 0 -1 2 3\n" + faces, "names vertex '-1'" },
   };
-  for (const Case& c : cases)
-  {
-    TextFile file(c.Text);
-    const Read read = ReadOff(file.Path);
-    EXPECT_EQ(read.Status, 0) << c.Text;
-    EXPECT_NE(read.Errors.find(c.Expected), std::string::npos)
-      << "file:\n"
-      << c.Text << "\nerror: " << read.Errors;
-    EXPECT_EQ(read.Mesh->GetNumberOfPoints(), 0) << c.Text;
-    EXPECT_EQ(read.Mesh->GetNumberOfCells(), 0) << c.Text;
-  }
-  const Read missing = ReadOff(testing::TempDir() + "no_such_file.off");
-  EXPECT_EQ(missing.Status, 0);
-  EXPECT_NE(missing.Errors.find("Cannot open"), std::string::npos) << missing.Errors;
-  vtkNew<vtkCVTOFFReader> unnamed;
-  vtkNew<cvttest::Messages> messages;
-  unnamed->AddObserver(vtkCommand::ErrorEvent, messages);
-  EXPECT_EQ(unnamed->GetExecutive()->Update(), 0);
-  EXPECT_NE(messages->Errors.find("No FileName"), std::string::npos) << messages->Errors;
+  ExpectRefusals<vtkCVTOFFReader>(cases, "off");
 }
 
 TEST(OBJReader, ReadsEveryCornerFormRelativeAndForwardIndicesAndContinuedLines)
@@ -208,11 +218,7 @@ TEST(OBJReader, ReadsEveryCornerFormRelativeAndForwardIndicesAndContinuedLines)
 TEST(OBJReader, MalformedFilesAreErrorsNamingTheLine)
 {
   const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  struct Case
-  {
-    std::string Text, Expected;
-  };
-  const Case cases[] = {
+  const std::vector<Case> cases = {
     { "", "line 0: the file has no vertices" },
     { "# only a comment\nvt 0 0\n", "has no vertices" },
     { "v 1 2\n", "line 1: a vertex needs three numbers" },
@@ -227,23 +233,5 @@ TEST(OBJReader, MalformedFilesAreErrorsNamingTheLine)
     { triangle + "l 1\n", "a line needs at least 2 corners" },
     { triangle + "f 1 2 99999999999999999999\n", "is not a vertex index" },
   };
-  for (const Case& c : cases)
-  {
-    TextFile file(c.Text, "obj");
-    const Read read = ReadObj(file.Path);
-    EXPECT_EQ(read.Status, 0) << c.Text;
-    EXPECT_NE(read.Errors.find(c.Expected), std::string::npos)
-      << "file:\n"
-      << c.Text << "\nerror: " << read.Errors;
-    EXPECT_EQ(read.Mesh->GetNumberOfPoints(), 0) << c.Text;
-    EXPECT_EQ(read.Mesh->GetNumberOfCells(), 0) << c.Text;
-  }
-  const Read missing = ReadObj(testing::TempDir() + "no_such_file.obj");
-  EXPECT_EQ(missing.Status, 0);
-  EXPECT_NE(missing.Errors.find("Cannot open"), std::string::npos) << missing.Errors;
-  vtkNew<vtkCVTOBJReader> unnamed;
-  vtkNew<cvttest::Messages> messages;
-  unnamed->AddObserver(vtkCommand::ErrorEvent, messages);
-  EXPECT_EQ(unnamed->GetExecutive()->Update(), 0);
-  EXPECT_NE(messages->Errors.find("No FileName"), std::string::npos) << messages->Errors;
+  ExpectRefusals<vtkCVTOBJReader>(cases, "obj");
 }
