@@ -121,19 +121,19 @@ private:
     for (p = SkipSpaces(p); *p != '\0'; p = SkipSpaces(p))
     {
       const char* end = WordEnd(p);
-      const std::string corner(p, end);
+      const auto corner = [p, end]() { return std::string(p, end); }; // for the errors alone
       errno = 0;
       char* after = nullptr;
       const long long index = std::strtoll(p, &after, 10);
       if (after == p || errno != 0 || !(after == end || *after == '/') || index == 0)
       {
-        return "the " + what + " corner '" + corner +
+        return "the " + what + " corner '" + corner() +
           "' is not a vertex index (1 is the first vertex, -1 the last one so far).";
       }
       const long long vertex = index > 0 ? index - 1 : count + index;
       if (vertex < 0)
       {
-        return "the " + what + " corner '" + corner + "' counts back past the first vertex (" +
+        return "the " + what + " corner '" + corner() + "' counts back past the first vertex (" +
           std::to_string(count) + " so far).";
       }
       if (vertex > this->LargestIndex)
