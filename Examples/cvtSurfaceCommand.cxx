@@ -174,6 +174,9 @@ int RunRemesh(const Options& options)
               << "  sites added for topology    "
               << Field(sites, "AddedSites") - Field(sites, "FarPointSites") << " (in "
               << Field(sites, "TopologyRounds") << " rounds"
+              << (Field(sites, "TopologyCeilingReached") > 0
+                     ? ", stopped at the ceiling of added sites"
+                     : "")
               << (Field(sites, "AddedSitesSettled") > 0 ? ", settled under their cells' sizes" : "")
               << ")\n"
               << "  sites added far from remesh " << Field(sites, "FarPointSites")

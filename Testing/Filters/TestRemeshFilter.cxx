@@ -681,6 +681,21 @@ TEST(RemeshFilter, HoleFarSmallerThanTheCellsIsOpenedAsOneTriangle)
   }
 }
 
+TEST(RemeshFilter, TopologyRoundsStopAtTheCeilingOfAddedSites)
+{
+  // A torus whose tube is 0.15% of the ring's radius thick, remeshed with 20 sites: each round
+  // asks for four times the sites of the last (rings of cells round the tube, split), and the
+  // fifth would reach the genus with 11845 added. The rounds stop before passing the ceiling
+  // (4 times the bound of 2000 added sites), after 5100 added, and the remesh with at most 2000
+  // added is taken, with the warning that says to use more sites.
+  RemeshRun run(Torus(0.0015, 8, 1200), 20, 30);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  EXPECT_NE(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_LE(Field(sites, "AddedSites"), 2000);
+  EXPECT_EQ(Field(sites, "TopologyCeilingReached"), 1);
+}
+
 TEST(RemeshFilter, OpenDiskKeepsItsBorderAndInterpolatesArrays)
 {
   vtkNew<vtkDiskSource> disk;
