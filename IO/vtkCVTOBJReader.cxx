@@ -2,8 +2,6 @@
 
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
@@ -11,7 +9,7 @@
 
 #include <cerrno>
 #include <cstdlib>
-#include <fstream>
+#include <istream>
 #include <string>
 
 vtkStandardNewMacro(vtkCVTOBJReader);
@@ -157,34 +155,9 @@ private:
 
 } // namespace
 
-vtkCVTOBJReader::vtkCVTOBJReader()
+bool vtkCVTOBJReader::ReadMesh(std::istream& in, vtkPolyData* output)
 {
-  this->SetNumberOfInputPorts(0);
-}
-
-int vtkCVTOBJReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
-  if (this->FileName.empty())
-  {
-    vtkErrorMacro("No FileName: set the .obj file to read.");
-    return 0;
-  }
-  std::ifstream in(this->FileName, std::ios::binary);
-  if (!in)
-  {
-    vtkErrorMacro("Cannot open '" << this->FileName << "': no such file or no permission.");
-    return 0;
-  }
   Statements mesh;
-  const auto fail = [&](long long line, const std::string& what)
-  {
-    vtkErrorMacro("'" << this->FileName << "' line " << line << ": " << what);
-    output->Initialize();
-    return 0;
-  };
   std::string text, statement;
   long long number = 0, first = 0; // the line read last, and the statement's first line
   while (std::getline(in, text))
@@ -212,23 +185,24 @@ int vtkCVTOBJReader::RequestData(
     const std::string problem = mesh.Read(statement.c_str(), first);
     if (!problem.empty())
     {
-      return fail(first, problem);
+      return this->LineError(first, problem);
     }
     statement.clear();
   }
   const std::string problem = mesh.Read(statement.c_str(), first); // ended on a backslash
   if (!problem.empty())
   {
-    return fail(first, problem);
+    return this->LineError(first, problem);
   }
   const long long count = mesh.Points->GetNumberOfPoints();
   if (count == 0)
   {
-    return fail(number, "the file has no vertices (lines 'v x y z'); is it an OBJ file?");
+    return this->LineError(
+      number, "the file has no vertices (lines 'v x y z'); is it an OBJ file?");
   }
   if (mesh.LargestIndex >= count)
   {
-    return fail(mesh.LargestIndexLine,
+    return this->LineError(mesh.LargestIndexLine,
       "a corner names vertex " + std::to_string(mesh.LargestIndex + 1) + ", but the file has " +
         std::to_string(count) + ".");
   }
@@ -246,11 +220,5 @@ int vtkCVTOBJReader::RequestData(
       (output->*set)(array);
     }
   }
-  return 1;
-}
-
-void vtkCVTOBJReader::PrintSelf(ostream& os, vtkIndent indent)
-{
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName.empty() ? "(none)" : this->FileName) << "\n";
+  return true;
 }

@@ -25,30 +25,20 @@
 #define vtkCVTOBJReader_h
 
 #include "cvtIOModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkCVTMeshFileReader.h"
 
-#include <string> // for std::string
-
-class CVTIO_EXPORT vtkCVTOBJReader : public vtkPolyDataAlgorithm
+class CVTIO_EXPORT vtkCVTOBJReader : public vtkCVTMeshFileReader
 {
 public:
   static vtkCVTOBJReader* New();
-  vtkTypeMacro(vtkCVTOBJReader, vtkPolyDataAlgorithm);
-  void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /** The .obj file to read. */
-  vtkSetStdStringFromCharMacro(FileName);
-  vtkGetCharFromStdStringMacro(FileName);
-  ///@}
+  vtkTypeMacro(vtkCVTOBJReader, vtkCVTMeshFileReader);
 
 protected:
-  vtkCVTOBJReader();
+  vtkCVTOBJReader() = default;
   ~vtkCVTOBJReader() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  std::string FileName;
+  bool ReadMesh(std::istream& in, vtkPolyData* output) override;
+  const char* GetExtension() const override { return ".obj"; }
 
 private:
   vtkCVTOBJReader(const vtkCVTOBJReader&) = delete;

@@ -2,8 +2,6 @@
 
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
@@ -12,7 +10,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdlib>
-#include <fstream>
+#include <istream>
 #include <sstream>
 #include <vector>
 
@@ -111,27 +109,8 @@ bool IsKeyword(const std::string& word, bool& otherDimension)
 
 } // namespace
 
-vtkCVTOFFReader::vtkCVTOFFReader()
+bool vtkCVTOFFReader::ReadMesh(std::istream& in, vtkPolyData* output)
 {
-  this->SetNumberOfInputPorts(0);
-}
-
-int vtkCVTOFFReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
-  if (this->FileName.empty())
-  {
-    vtkErrorMacro("No FileName: set the .off file to read.");
-    return 0;
-  }
-  std::ifstream in(this->FileName);
-  if (!in)
-  {
-    vtkErrorMacro("Cannot open '" << this->FileName << "': no such file or no permission.");
-    return 0;
-  }
   // Each vertex line holds at least 6 characters ("0 0 0\n") and each face line 8: a wrong
   // header must not size the arrays beyond what the file can hold (it fails further down).
   in.seekg(0, std::ios::end);
@@ -139,12 +118,8 @@ int vtkCVTOFFReader::RequestData(
   in.seekg(0);
   OffLines lines(in);
   std::string line;
-  auto fail = [&](const std::string& what)
-  {
-    vtkErrorMacro("'" << this->FileName << "' line " << lines.LineNumber() << ": " << what);
-    output->Initialize();
-    return 0;
-  };
+  const auto fail = [&](const std::string& what)
+  { return this->LineError(lines.LineNumber(), what); };
   if (!lines.Next(line))
   {
     return fail("the file is empty; an OFF file starts with OFF and the vertex and face counts.");
@@ -239,11 +214,5 @@ int vtkCVTOFFReader::RequestData(
   polygons->SetData(offsets, connectivity);
   output->SetPoints(points);
   output->SetPolys(polygons);
-  return 1;
-}
-
-void vtkCVTOFFReader::PrintSelf(ostream& os, vtkIndent indent)
-{
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName.empty() ? "(none)" : this->FileName) << "\n";
+  return true;
 }

@@ -17,30 +17,20 @@
 #define vtkCVTOFFReader_h
 
 #include "cvtIOModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkCVTMeshFileReader.h"
 
-#include <string> // for std::string
-
-class CVTIO_EXPORT vtkCVTOFFReader : public vtkPolyDataAlgorithm
+class CVTIO_EXPORT vtkCVTOFFReader : public vtkCVTMeshFileReader
 {
 public:
   static vtkCVTOFFReader* New();
-  vtkTypeMacro(vtkCVTOFFReader, vtkPolyDataAlgorithm);
-  void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /** The .off file to read. */
-  vtkSetStdStringFromCharMacro(FileName);
-  vtkGetCharFromStdStringMacro(FileName);
-  ///@}
+  vtkTypeMacro(vtkCVTOFFReader, vtkCVTMeshFileReader);
 
 protected:
-  vtkCVTOFFReader();
+  vtkCVTOFFReader() = default;
   ~vtkCVTOFFReader() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  std::string FileName;
+  bool ReadMesh(std::istream& in, vtkPolyData* output) override;
+  const char* GetExtension() const override { return ".off"; }
 
 private:
   vtkCVTOFFReader(const vtkCVTOFFReader&) = delete;
