@@ -149,20 +149,29 @@ struct RestrictedVoronoi::Internals
   void LabelPoints();
   /// Clips the triangles of blocks [firstBlock, lastBlock) (all of them for the dual).
   void Sweep(bool dual, int firstBlock, int lastBlock);
+  /// Nearest sites of one site beyond the stored ones, nearest first.
+  struct NeighborList
+  {
+    std::vector<std::uint32_t> Ids;
+    std::vector<double> D2;
+  };
   /// Per thread: more neighbours when the stored ones do not suffice, and the cells queued for
   /// one triangle (a large triangle, as in CAD models, can meet thousands of cells).
   struct Scratch
   {
-    std::vector<std::uint32_t> Ids;
-    std::vector<double> D2;
+    /// Per site: the longest list asked of the tree in these blocks, for the site's other
+    /// triangles, where the stored neighbours do not suffice (thin plates: the nearest 12 are
+    /// the rings of both faces). Asking again per triangle took 3% more time on Cura's 91
+    /// printer models at 1000 sites (median), for the same cells.
+    std::unordered_map<int, NeighborList> More;
     std::vector<int> Queue;
     std::vector<int> Stamp; // per site: the mark of the last triangle that queued it
     int Mark = 0;
   };
   void ProcessTriangle(int t, bool dual, std::vector<Piece>& pieces,
     std::vector<std::array<int, 4>>& triples, ContactList& contacts, Scratch& scratch) const;
-  const Polygon* ClipToCell(int t, int site, Polygon& polygon, Polygon& spare,
-    std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const;
+  const Polygon* ClipToCell(
+    int t, int site, Polygon& polygon, Polygon& spare, Scratch& scratch) const;
   void Integrate(int t, const double* s, const Polygon& polygon, Piece& piece) const;
   void WholeTriangle(int t, Polygon& polygon) const;
   void Barycentric(int t, const double* p, double* lambda) const;
@@ -219,8 +228,8 @@ void RestrictedVoronoi::Internals::WholeTriangle(int t, Polygon& polygon) const
 // are computed from the edge's end points in a fixed order, so the two triangles of an edge
 // agree on them exactly. Clipping alternates between `polygon` and `spare` (no copies); returns
 // the one that holds the result, or nullptr when it is empty.
-const Polygon* RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon& polygon,
-  Polygon& spare, std::vector<std::uint32_t>& scratchIds, std::vector<double>& scratchD2) const
+const Polygon* RestrictedVoronoi::Internals::ClipToCell(
+  int t, int site, Polygon& polygon, Polygon& spare, Scratch& scratch) const
 {
   const auto& tri = this->Mesh.Triangles[t];
   this->WholeTriangle(t, polygon);
@@ -241,29 +250,37 @@ const Polygon* RestrictedVoronoi::Internals::ClipToCell(int t, int site, Polygon
       {
         break; // every other site has clipped
       }
-      // Rare: more neighbours are needed than are stored; ask the tree for twice as many.
-      const size_t want = std::min(siteCount, 2 * (available + 1));
-      scratchIds.resize(want);
-      scratchD2.resize(want);
-      const size_t found = this->Tree->knnSearch(s, want, scratchIds.data(), scratchD2.data());
-      // The first result is the site itself (or a site at the same place).
-      size_t keep = 0;
-      for (size_t f = 0; f < found; ++f)
+      // Rare: more neighbours are needed than are stored. Those this site needed for another
+      // triangle come first (the same nearest-first order: the same clipping), then twice as
+      // many from the tree.
+      NeighborList& more = scratch.More[site];
+      if (more.Ids.size() <= available)
       {
-        if (scratchIds[f] != static_cast<std::uint32_t>(site))
+        const size_t want = std::min(siteCount, 2 * (available + 1));
+        more.Ids.resize(want);
+        more.D2.resize(want);
+        const size_t found = this->Tree->knnSearch(s, want, more.Ids.data(), more.D2.data());
+        // The first result is the site itself (or a site at the same place).
+        size_t keep = 0;
+        for (size_t f = 0; f < found; ++f)
         {
-          scratchIds[keep] = scratchIds[f];
-          scratchD2[keep] = scratchD2[f];
-          ++keep;
+          if (more.Ids[f] != static_cast<std::uint32_t>(site))
+          {
+            more.Ids[keep] = more.Ids[f];
+            more.D2[keep] = more.D2[f];
+            ++keep;
+          }
         }
+        more.Ids.resize(keep);
+        more.D2.resize(keep);
       }
-      ids = scratchIds.data();
-      d2 = scratchD2.data();
-      if (keep <= available)
+      if (more.Ids.size() <= available)
       {
         break;
       }
-      available = keep;
+      ids = more.Ids.data();
+      d2 = more.D2.data();
+      available = more.Ids.size();
     }
     if (radius2 < 0.0)
     {
@@ -753,7 +770,7 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
   for (size_t next = 0; next < queue.size(); ++next)
   {
     const int site = queue[next];
-    const Polygon* clipped = this->ClipToCell(t, site, polygon, spare, scratch.Ids, scratch.D2);
+    const Polygon* clipped = this->ClipToCell(t, site, polygon, spare, scratch);
     if (!clipped)
     {
       continue;
