@@ -671,8 +671,11 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
           }
           else if (flip[u] != needed)
           {
-            return "the mesh is not orientable (a Moebius-like component near point " +
-              Where(mesh, a) + "); the remesher needs an orientable surface";
+            // Two paths from the seed reach triangle u with opposite orientations.
+            return "the mesh is not orientable: along a loop through point " + Where(mesh, a) +
+              " its triangles cannot all face one way (a Moebius-like twist, or parts joined with "
+              "opposite normals); the remesher needs an orientable surface: make the normals "
+              "agree there, or separate the parts";
           }
         }
       }
