@@ -85,7 +85,10 @@ std::string MeshRepairReport::Summary() const
   item(this->DegenerateTriangles, "dropped degenerate triangles:");
   item(this->JoinedAtLines, "triangles added to join the mesh where degenerate ones did:");
   item(this->DuplicateTriangles, "dropped duplicate triangles:");
-  item(this->SplitEdges, "split non-manifold edges:");
+  item(this->SplitEdges,
+    this->SheetsApart ? "split non-manifold edges, every triangle at them "
+                        "apart (pairs of them twisted the surface):"
+                      : "split non-manifold edges:");
   item(this->SplitPoints, "split non-manifold points:");
   item(this->FlippedTriangles, "reoriented triangles:");
   item(this->UnusedPoints, "dropped unused points:");
@@ -273,12 +276,13 @@ std::vector<int> SheetsRoundEdge(const SurfaceMesh& mesh, int a, int b, const st
 
 /// Splits the edges of more than two triangles. Round each end point p of such an edge, the
 /// triangles fall into fans joined across edges (p, x) of exactly two triangles, and across the
-/// crowded edge only within a sheet (SheetsRoundEdge); each fan but the first gets its own copy
-/// of p, so each sheet goes on through the edge and stays joined to the rest of its surface.
+/// crowded edge only within a sheet (SheetsRoundEdge, or with `pairSheets` false each triangle
+/// a sheet of its own); each fan but the first gets its own copy of p, so each sheet goes on
+/// through the edge and stays joined to the rest of its surface.
 /// Where the sheets' fans meet elsewhere round both ends (a surface that touches itself along
 /// the edge), the triangles beyond the first pair get their own copies of the edge's points.
 /// Returns how many edges were split.
-int SplitCrowdedEdges(SurfaceMesh& mesh, const EdgeTable& edges)
+int SplitCrowdedEdges(SurfaceMesh& mesh, const EdgeTable& edges, bool pairSheets)
 {
   std::vector<std::uint64_t> crowded;
   std::vector<char> onCrowded(mesh.NumberOfPoints(), 0);
@@ -328,7 +332,15 @@ int SplitCrowdedEdges(SurfaceMesh& mesh, const EdgeTable& edges)
     {
       continue;
     }
-    const std::vector<int> sheet = SheetsRoundEdge(mesh, a, b, on);
+    std::vector<int> sheet(on.size());
+    if (pairSheets)
+    {
+      sheet = SheetsRoundEdge(mesh, a, b, on);
+    }
+    else
+    {
+      std::iota(sheet.begin(), sheet.end(), 0);
+    }
     std::unordered_map<int, int> sheetOf;
     for (size_t i = 0; i < on.size(); ++i)
     {
@@ -561,6 +573,63 @@ int SplitAtLinePoints(const SurfaceMesh& mesh, const std::vector<int>& linePoint
   }
   return added;
 }
+
+/// Orients each connected component (across edges of two triangles) consistently, breadth-first
+/// from its first triangle: `flip` per triangle, the triangles of each component. Returns "" or
+/// where a component cannot be oriented.
+std::string OrientComponents(const SurfaceMesh& mesh, const EdgeTable& edges,
+  std::vector<char>& flip, std::vector<std::vector<int>>& components)
+{
+  const int triangleCount = mesh.NumberOfTriangles();
+  std::vector<int> component(triangleCount, -1);
+  flip.assign(triangleCount, 0);
+  components.clear();
+  for (int seed = 0; seed < triangleCount; ++seed)
+  {
+    if (component[seed] >= 0)
+    {
+      continue;
+    }
+    const int id = static_cast<int>(components.size());
+    components.emplace_back(1, seed);
+    component[seed] = id;
+    for (size_t next = 0; next < components[id].size(); ++next)
+    {
+      const int t = components[id][next];
+      for (int e = 0; e < 3; ++e)
+      {
+        const int a = mesh.Triangles[t][e], b = mesh.Triangles[t][(e + 1) % 3];
+        for (const EdgeUse& other : edges.At(t, e))
+        {
+          const int u = other.Triangle;
+          if (u == t)
+          {
+            continue;
+          }
+          // Agreeing orientations traverse the shared edge in opposite directions.
+          const bool sameDirection = mesh.Triangles[u][other.Local] == a;
+          const char needed = static_cast<char>(flip[t] ^ (sameDirection ? 1 : 0));
+          if (component[u] < 0)
+          {
+            component[u] = id;
+            flip[u] = needed;
+            components[id].push_back(u);
+          }
+          else if (flip[u] != needed)
+          {
+            // Two paths from the seed reach triangle u with opposite orientations.
+            return "the mesh is not orientable: along a loop through point " + Where(mesh, a) +
+              " its triangles cannot all face one way (a Moebius-like twist, or parts joined with "
+              "opposite normals); the remesher needs an orientable surface: make the normals "
+              "agree there, or separate the parts";
+          }
+        }
+      }
+    }
+  }
+  return "";
+}
+
 } // namespace
 
 std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
@@ -628,58 +697,38 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   // Non-manifold edges: their triangles are paired into sheets, each sheet beyond the first
   // with its own copies of the edge's points (SplitCrowdedEdges).
   EdgeTable edges(mesh.Triangles);
-  report.SplitEdges = SplitCrowdedEdges(mesh, edges);
+  SurfaceMesh unsplit; // kept for a second try with every sheet apart
+  for (size_t e = 0; e < edges.NumberOfEdges() && unsplit.Triangles.empty(); ++e)
+  {
+    if (edges.Edge(e).size() > 2)
+    {
+      unsplit = mesh;
+    }
+  }
+  report.SplitEdges = SplitCrowdedEdges(mesh, edges, true);
   if (report.SplitEdges > 0)
   {
     edges = EdgeTable(mesh.Triangles);
   }
-  // Consistent orientation, component by component (breadth-first over edges).
-  const int triangleCount = mesh.NumberOfTriangles();
-  std::vector<int> component(triangleCount, -1);
-  std::vector<char> flip(triangleCount, 0);
+  // Consistent orientation, component by component.
+  std::vector<char> flip;
   std::vector<std::vector<int>> components;
-  for (int seed = 0; seed < triangleCount; ++seed)
+  std::string twisted = OrientComponents(mesh, edges, flip, components);
+  if (!twisted.empty() && report.SplitEdges > 0)
   {
-    if (component[seed] >= 0)
-    {
-      continue;
-    }
-    const int id = static_cast<int>(components.size());
-    components.emplace_back(1, seed);
-    component[seed] = id;
-    for (size_t next = 0; next < components[id].size(); ++next)
-    {
-      const int t = components[id][next];
-      for (int e = 0; e < 3; ++e)
-      {
-        const int a = mesh.Triangles[t][e], b = mesh.Triangles[t][(e + 1) % 3];
-        for (const EdgeUse& other : edges.At(t, e))
-        {
-          const int u = other.Triangle;
-          if (u == t)
-          {
-            continue;
-          }
-          // Agreeing orientations traverse the shared edge in opposite directions.
-          const bool sameDirection = mesh.Triangles[u][other.Local] == a;
-          const char needed = static_cast<char>(flip[t] ^ (sameDirection ? 1 : 0));
-          if (component[u] < 0)
-          {
-            component[u] = id;
-            flip[u] = needed;
-            components[id].push_back(u);
-          }
-          else if (flip[u] != needed)
-          {
-            // Two paths from the seed reach triangle u with opposite orientations.
-            return "the mesh is not orientable: along a loop through point " + Where(mesh, a) +
-              " its triangles cannot all face one way (a Moebius-like twist, or parts joined with "
-              "opposite normals); the remesher needs an orientable surface: make the normals "
-              "agree there, or separate the parts";
-          }
-        }
-      }
-    }
+    // The sheets were paired round the crowded edges by their order round them, before the
+    // orientation was known, and some pairs twist the surface (OpenFOAM's motorBike.obj): again
+    // with every sheet apart there.
+    mesh = std::move(unsplit);
+    const EdgeTable crowded(mesh.Triangles);
+    report.SplitEdges = SplitCrowdedEdges(mesh, crowded, false);
+    report.SheetsApart = true;
+    edges = EdgeTable(mesh.Triangles);
+    twisted = OrientComponents(mesh, edges, flip, components);
+  }
+  if (!twisted.empty())
+  {
+    return twisted;
   }
   for (const auto& triangles : components)
   {

@@ -1,6 +1,7 @@
 // The exact CPU surface engine (restricted Voronoi cells on a triangle mesh), its dual and the
 // mesh repairs, against independent computations: exact 2D Voronoi polygons for a flat mesh,
 // brute-force nearest sites on a fine quadrature for a curved one.
+#include "cvtEdgeTable.h"
 #include "cvtExactVoronoi.h"
 #include "cvtGeometry.h"
 #include "cvtProblems.h"
@@ -1804,6 +1805,7 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
   }
   EXPECT_EQ(cvt::RepairSurfaceMesh(touching, report), "");
   EXPECT_EQ(report.SplitEdges, 1);
+  EXPECT_FALSE(report.SheetsApart); // pairs that agree stay
   EXPECT_EQ(touching.NumberOfTriangles(), 8);
   const cvt::MeshTopology sheets =
     cvt::ComputeMeshTopology(touching.NumberOfPoints(), touching.Triangles);
@@ -1812,6 +1814,57 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
   EXPECT_LE(sheets.Components, 2);
   EXPECT_EQ(sheets.Genus, 0);
 
+  // A plate crossed along a segment by a wall whose two halves face opposite ways (OpenFOAM's
+  // motorBike.obj has such joins): round the 4 crowded edges the sheets pair with the
+  // orientations they have, plate half to wall half, so that a loop through the wall's halves
+  // and round the segment's end twists. Every triangle at the crowded edges is then set apart:
+  // a slit in the plate, the wall's halves free, each oriented; before, "not orientable".
+  cvt::SurfaceMesh crossed = FlatSquare(8, -2.0, 2.0);
+  const int firstSpine = 4 * 9 + 2; // points (-1, 0, 0) .. (1, 0, 0), 0.5 apart
+  std::vector<int> top, bottom;
+  for (int i = 0; i < 5; ++i)
+  {
+    const double x = -1.0 + 0.5 * i;
+    top.push_back(crossed.NumberOfPoints());
+    crossed.Points.insert(crossed.Points.end(), { x, 0.0, 0.5 });
+    bottom.push_back(crossed.NumberOfPoints());
+    crossed.Points.insert(crossed.Points.end(), { x, 0.0, -0.5 });
+  }
+  for (int i = 0; i < 4; ++i)
+  {
+    const int s0 = firstSpine + i, s1 = s0 + 1;
+    const std::array<std::array<int, 3>, 4> wall = { { { s0, s1, top[i + 1] },
+      { s0, top[i + 1], top[i] }, { bottom[i], bottom[i + 1], s1 }, { bottom[i], s1, s0 } } };
+    for (std::array<int, 3> triangle : wall)
+    {
+      if (i >= 2)
+      {
+        std::swap(triangle[1], triangle[2]); // the half at x > 0 faces the other way
+      }
+      crossed.Triangles.push_back(triangle);
+    }
+  }
+  EXPECT_EQ(cvt::RepairSurfaceMesh(crossed, report), "");
+  EXPECT_GT(report.SplitEdges, 0);
+  EXPECT_TRUE(report.SheetsApart);
+  EXPECT_NE(report.Summary().find("apart"), std::string::npos) << report.Summary();
+  const cvt::MeshTopology apart =
+    cvt::ComputeMeshTopology(crossed.NumberOfPoints(), crossed.Triangles);
+  EXPECT_EQ(apart.Components, 3); // the slit plate and the wall's two strips
+  const cvt::EdgeTable crossedEdges(crossed.Triangles);
+  for (size_t e = 0; e < crossedEdges.NumberOfEdges(); ++e)
+  {
+    const cvt::EdgeTable::Range uses = crossedEdges.Edge(e);
+    ASSERT_LE(uses.size(), 2u);
+    if (uses.size() == 2)
+    {
+      const cvt::EdgeUse& first = uses.First[0];
+      const cvt::EdgeUse& second = uses.First[1];
+      EXPECT_NE(crossed.Triangles[first.Triangle][first.Local],
+        crossed.Triangles[second.Triangle][second.Local])
+        << "edge " << e << " is traversed one way twice";
+    }
+  }
   // A closed sphere far from the origin (georeferenced coordinates), facing outwards: left as it
   // is. Its volume summed from the origin was rounding noise of either sign (an elephant 1e6
   // away had all its triangles turned inwards).
