@@ -464,7 +464,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     best = std::move(bounded);
     best.Rounds = rounds;
   }
-  best.CeilingReached = ceilingReached;
+  best.CeilingReached = ceilingReached && best.Mismatch != 0; // not when a later pass got there
   if (best.Mismatch == 0 && best.AddedSites > 0 && !aborted() &&
     !SettleUnderCellSizes(engine, mesh, input, best, error))
   {

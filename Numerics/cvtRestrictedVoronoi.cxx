@@ -251,8 +251,8 @@ const Polygon* RestrictedVoronoi::Internals::ClipToCell(
         break; // every other site has clipped
       }
       // Rare: more neighbours are needed than are stored. Those this site needed for another
-      // triangle come first (the same nearest-first order: the same clipping), then twice as
-      // many from the tree.
+      // triangle come first, then twice as many from the tree. The same clipping: a shorter
+      // exact k-nearest list of nanoflann is the start of a longer one (ties in visit order).
       NeighborList& more = scratch.More[site];
       if (more.Ids.size() <= available)
       {

@@ -409,7 +409,7 @@ int SplitCrowdedEdges(SurfaceMesh& mesh, const EdgeTable& edges, bool pairSheets
       around.swap(stays);
     }
     // Sheets whose fans meet round both ends: the triangles beyond the first pair left on the
-    // edge get their own copies of its points.
+    // edge (beyond the first, with every triangle apart) get their own copies of its points.
     std::vector<int> left;
     for (int t : on)
     {
@@ -418,9 +418,9 @@ int SplitCrowdedEdges(SurfaceMesh& mesh, const EdgeTable& edges, bool pairSheets
         left.push_back(t);
       }
     }
-    if (left.size() > 2)
+    if (left.size() > (pairSheets ? 2u : 1u))
     {
-      size_t mate = 1;
+      size_t mate = pairSheets ? 1 : 0; // 0: none
       for (size_t k = 1; k < left.size(); ++k)
       {
         mate = sheetOf[left[k]] == sheetOf[left[0]] ? k : mate;
@@ -598,7 +598,7 @@ std::string OrientComponents(const SurfaceMesh& mesh, const EdgeTable& edges,
       const int t = components[id][next];
       for (int e = 0; e < 3; ++e)
       {
-        const int a = mesh.Triangles[t][e], b = mesh.Triangles[t][(e + 1) % 3];
+        const int a = mesh.Triangles[t][e];
         for (const EdgeUse& other : edges.At(t, e))
         {
           const int u = other.Triangle;
@@ -718,7 +718,7 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   {
     // The sheets were paired round the crowded edges by their order round them, before the
     // orientation was known, and some pairs twist the surface (OpenFOAM's motorBike.obj): again
-    // with every sheet apart there.
+    // with every triangle apart at every crowded edge of the mesh.
     mesh = std::move(unsplit);
     const EdgeTable crowded(mesh.Triangles);
     report.SplitEdges = SplitCrowdedEdges(mesh, crowded, false);

@@ -48,7 +48,8 @@ struct MeshRepairReport
 /// Prepares a mesh for remeshing: drops degenerate and duplicate triangles and unused points
 /// (where zero-area triangles joined others along a line, those are split to join there),
 /// splits non-manifold edges (the triangles beyond an agreeing pair get their own copies of the
-/// edge's points; every triangle on them, where the pairs would make the surface non-orientable)
+/// edge's points; where the pairs would make the surface non-orientable, every triangle on
+/// every such edge)
 /// and points (one copy per fan of triangles), orients every connected component
 /// consistently (closed ones outwards). Returns "" or what makes the mesh unusable: a
 /// non-orientable component (with where), no triangle left.
