@@ -85,10 +85,9 @@ std::string MeshRepairReport::Summary() const
   item(this->DegenerateTriangles, "dropped degenerate triangles:");
   item(this->JoinedAtLines, "triangles added to join the mesh where degenerate ones did:");
   item(this->DuplicateTriangles, "dropped duplicate triangles:");
-  item(this->SplitEdges,
-    this->SheetsApart ? "split non-manifold edges, every triangle at them "
-                        "apart (pairs of them twisted the surface):"
-                      : "split non-manifold edges:");
+  item(this->SplitEdges, "split non-manifold edges:");
+  item(
+    this->SplitEdgesApart, "of them with every triangle apart (paired, they twisted the surface):");
   item(this->SplitPoints, "split non-manifold points:");
   item(this->FlippedTriangles, "reoriented triangles:");
   item(this->UnusedPoints, "dropped unused points:");
@@ -276,14 +275,16 @@ std::vector<int> SheetsRoundEdge(const SurfaceMesh& mesh, int a, int b, const st
 
 /// Splits the edges of more than two triangles. Round each end point p of such an edge, the
 /// triangles fall into fans joined across edges (p, x) of exactly two triangles, and across the
-/// crowded edge only within a sheet (SheetsRoundEdge, or with `pairSheets` false each triangle
-/// a sheet of its own); each fan but the first gets its own copy of p, so each sheet goes on
-/// through the edge and stays joined to the rest of its surface.
-/// Where the sheets' fans meet elsewhere round both ends (a surface that touches itself along
-/// the edge), the triangles beyond the first pair get their own copies of the edge's points.
-/// Returns how many edges were split.
-int SplitCrowdedEdges(SurfaceMesh& mesh, const EdgeTable& edges, bool pairSheets)
+/// crowded edge only within a sheet (SheetsRoundEdge, or where a triangle on the edge is marked
+/// in `apart`, each triangle a sheet of its own: `splitApart` counts those edges); each fan but the
+/// first gets its own copy of p, so each sheet goes on through the edge and stays joined to the
+/// rest of its surface. Where the sheets' fans meet elsewhere round both ends (a surface that
+/// touches itself along the edge), the triangles beyond the first pair get their own copies of the
+/// edge's points. Returns how many edges were split.
+int SplitCrowdedEdges(
+  SurfaceMesh& mesh, const EdgeTable& edges, const std::vector<char>& apart, int& splitApart)
 {
+  splitApart = 0;
   std::vector<std::uint64_t> crowded;
   std::vector<char> onCrowded(mesh.NumberOfPoints(), 0);
   for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
@@ -332,6 +333,9 @@ int SplitCrowdedEdges(SurfaceMesh& mesh, const EdgeTable& edges, bool pairSheets
     {
       continue;
     }
+    const bool pairSheets = apart.empty() ||
+      std::none_of(on.begin(), on.end(), [&apart](int t) { return apart[t] != 0; });
+    splitApart += pairSheets ? 0 : 1;
     std::vector<int> sheet(on.size());
     if (pairSheets)
     {
@@ -575,15 +579,18 @@ int SplitAtLinePoints(const SurfaceMesh& mesh, const std::vector<int>& linePoint
 }
 
 /// Orients each connected component (across edges of two triangles) consistently, breadth-first
-/// from its first triangle: `flip` per triangle, the triangles of each component. Returns "" or
-/// where a component cannot be oriented.
+/// from its first triangle: `flip` per triangle, the triangles of each component, and per
+/// component whether it is `twisted` (cannot be oriented). Returns "" or where the first twisted
+/// one cannot be oriented.
 std::string OrientComponents(const SurfaceMesh& mesh, const EdgeTable& edges,
-  std::vector<char>& flip, std::vector<std::vector<int>>& components)
+  std::vector<char>& flip, std::vector<std::vector<int>>& components, std::vector<char>& twisted)
 {
+  std::string problem;
   const int triangleCount = mesh.NumberOfTriangles();
   std::vector<int> component(triangleCount, -1);
   flip.assign(triangleCount, 0);
   components.clear();
+  twisted.clear();
   for (int seed = 0; seed < triangleCount; ++seed)
   {
     if (component[seed] >= 0)
@@ -592,6 +599,7 @@ std::string OrientComponents(const SurfaceMesh& mesh, const EdgeTable& edges,
     }
     const int id = static_cast<int>(components.size());
     components.emplace_back(1, seed);
+    twisted.push_back(0);
     component[seed] = id;
     for (size_t next = 0; next < components[id].size(); ++next)
     {
@@ -615,19 +623,23 @@ std::string OrientComponents(const SurfaceMesh& mesh, const EdgeTable& edges,
             flip[u] = needed;
             components[id].push_back(u);
           }
-          else if (flip[u] != needed)
+          else if (flip[u] != needed && !twisted[id])
           {
             // Two paths from the seed reach triangle u with opposite orientations.
-            return "the mesh is not orientable: along a loop through point " + Where(mesh, a) +
-              " its triangles cannot all face one way (a Moebius-like twist, or parts joined with "
-              "opposite normals); the remesher needs an orientable surface: make the normals "
-              "agree there, or separate the parts";
+            twisted[id] = 1;
+            if (problem.empty())
+            {
+              problem = "the mesh is not orientable: along a loop through point " + Where(mesh, a) +
+                " its triangles cannot all face one way (a Moebius-like twist, or parts joined "
+                "with opposite normals); the remesher needs an orientable surface: make the "
+                "normals agree there, or separate the parts";
+            }
           }
         }
       }
     }
   }
-  return "";
+  return problem;
 }
 
 } // namespace
@@ -697,7 +709,7 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   // Non-manifold edges: their triangles are paired into sheets, each sheet beyond the first
   // with its own copies of the edge's points (SplitCrowdedEdges).
   EdgeTable edges(mesh.Triangles);
-  SurfaceMesh unsplit; // kept for a second try with every sheet apart
+  SurfaceMesh unsplit; // kept for a second try with the twisted parts' sheets apart
   for (size_t e = 0; e < edges.NumberOfEdges() && unsplit.Triangles.empty(); ++e)
   {
     if (edges.Edge(e).size() > 2)
@@ -705,30 +717,38 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
       unsplit = mesh;
     }
   }
-  report.SplitEdges = SplitCrowdedEdges(mesh, edges, true);
+  report.SplitEdges = SplitCrowdedEdges(mesh, edges, {}, report.SplitEdgesApart);
   if (report.SplitEdges > 0)
   {
     edges = EdgeTable(mesh.Triangles);
   }
   // Consistent orientation, component by component.
-  std::vector<char> flip;
+  std::vector<char> flip, twisted;
   std::vector<std::vector<int>> components;
-  std::string twisted = OrientComponents(mesh, edges, flip, components);
-  if (!twisted.empty() && report.SplitEdges > 0)
+  std::string problem = OrientComponents(mesh, edges, flip, components, twisted);
+  if (!problem.empty() && report.SplitEdges > 0)
   {
     // The sheets were paired round the crowded edges by their order round them, before the
-    // orientation was known, and some pairs twist the surface (OpenFOAM's motorBike.obj): again
-    // with every triangle apart at every crowded edge of the mesh.
+    // orientation was known, and some pairs twist the surface (OpenFOAM's motorBike.obj): again,
+    // with every triangle apart at the crowded edges of the twisted components (the triangles
+    // keep their indices through the splits).
+    std::vector<char> apart(mesh.Triangles.size(), 0);
+    for (size_t c = 0; c < components.size(); ++c)
+    {
+      for (int t : components[c])
+      {
+        apart[t] = twisted[c];
+      }
+    }
     mesh = std::move(unsplit);
     const EdgeTable crowded(mesh.Triangles);
-    report.SplitEdges = SplitCrowdedEdges(mesh, crowded, false);
-    report.SheetsApart = true;
+    report.SplitEdges = SplitCrowdedEdges(mesh, crowded, apart, report.SplitEdgesApart);
     edges = EdgeTable(mesh.Triangles);
-    twisted = OrientComponents(mesh, edges, flip, components);
+    problem = OrientComponents(mesh, edges, flip, components, twisted);
   }
-  if (!twisted.empty())
+  if (!problem.empty())
   {
-    return twisted;
+    return problem;
   }
   for (const auto& triangles : components)
   {

@@ -36,7 +36,7 @@ struct MeshRepairReport
   int JoinedAtLines = 0;       // added splitting the triangles that degenerate ones joined
   int DuplicateTriangles = 0;  // same three points as another: dropped
   int SplitEdges = 0;          // edges of more than two triangles, the extra ones detached
-  bool SheetsApart = false;    // at them every triangle apart: pairs would twist the surface
+  int SplitEdgesApart = 0;     // of those, with every triangle apart: pairs twisted the surface
   int SplitPoints = 0;         // non-manifold points made into one point per fan
   int FlippedTriangles = 0;    // reoriented to agree with their neighbours
   int UnusedPoints = 0;        // points of no triangle: dropped
@@ -48,8 +48,8 @@ struct MeshRepairReport
 /// Prepares a mesh for remeshing: drops degenerate and duplicate triangles and unused points
 /// (where zero-area triangles joined others along a line, those are split to join there),
 /// splits non-manifold edges (the triangles beyond an agreeing pair get their own copies of the
-/// edge's points; where the pairs would make the surface non-orientable, every triangle on
-/// every such edge)
+/// edge's points; where the pairs would make a component non-orientable, every triangle on
+/// that component's such edges)
 /// and points (one copy per fan of triangles), orients every connected component
 /// consistently (closed ones outwards). Returns "" or what makes the mesh unusable: a
 /// non-orientable component (with where), no triangle left.

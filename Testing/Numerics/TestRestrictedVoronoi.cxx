@@ -1803,9 +1803,10 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
     touching.Triangles.insert(touching.Triangles.end(),
       { { v[0], v[2], v[1] }, { v[0], v[1], v[3] }, { v[1], v[2], v[3] }, { v[0], v[3], v[2] } });
   }
+  const cvt::SurfaceMesh touchingInput = touching;
   EXPECT_EQ(cvt::RepairSurfaceMesh(touching, report), "");
   EXPECT_EQ(report.SplitEdges, 1);
-  EXPECT_FALSE(report.SheetsApart); // pairs that agree stay
+  EXPECT_EQ(report.SplitEdgesApart, 0); // pairs that agree stay
   EXPECT_EQ(touching.NumberOfTriangles(), 8);
   const cvt::MeshTopology sheets =
     cvt::ComputeMeshTopology(touching.NumberOfPoints(), touching.Triangles);
@@ -1844,9 +1845,10 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
       crossed.Triangles.push_back(triangle);
     }
   }
+  const cvt::SurfaceMesh crossedInput = crossed;
   EXPECT_EQ(cvt::RepairSurfaceMesh(crossed, report), "");
   EXPECT_GT(report.SplitEdges, 0);
-  EXPECT_TRUE(report.SheetsApart);
+  EXPECT_EQ(report.SplitEdgesApart, report.SplitEdges);
   EXPECT_NE(report.Summary().find("apart"), std::string::npos) << report.Summary();
   const cvt::MeshTopology apart =
     cvt::ComputeMeshTopology(crossed.NumberOfPoints(), crossed.Triangles);
@@ -1865,6 +1867,23 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
         << "edge " << e << " is traversed one way twice";
     }
   }
+  // Only the twisted part's sheets are set apart: beside it, the two tetrahedra sharing an edge
+  // keep their pairs (closed surfaces, no border added).
+  cvt::SurfaceMesh both = crossedInput;
+  const int shift = both.NumberOfPoints();
+  for (int p = 0; p < touchingInput.NumberOfPoints(); ++p)
+  {
+    const double* x = touchingInput.Point(p);
+    both.Points.insert(both.Points.end(), { x[0] + 10.0, x[1], x[2] });
+  }
+  for (const auto& triangle : touchingInput.Triangles)
+  {
+    both.Triangles.push_back({ triangle[0] + shift, triangle[1] + shift, triangle[2] + shift });
+  }
+  EXPECT_EQ(cvt::RepairSurfaceMesh(both, report), "");
+  EXPECT_EQ(report.SplitEdges, report.SplitEdgesApart + 1);
+  EXPECT_EQ(cvt::ComputeMeshTopology(both.NumberOfPoints(), both.Triangles).BoundaryLoops,
+    apart.BoundaryLoops);
   // A closed sphere far from the origin (georeferenced coordinates), facing outwards: left as it
   // is. Its volume summed from the origin was rounding noise of either sign (an elephant 1e6
   // away had all its triangles turned inwards).
