@@ -709,14 +709,10 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
   // Non-manifold edges: their triangles are paired into sheets, each sheet beyond the first
   // with its own copies of the edge's points (SplitCrowdedEdges).
   EdgeTable edges(mesh.Triangles);
-  SurfaceMesh unsplit; // kept for a second try with the twisted parts' sheets apart
-  for (size_t e = 0; e < edges.NumberOfEdges() && unsplit.Triangles.empty(); ++e)
-  {
-    if (edges.Edge(e).size() > 2)
-    {
-      unsplit = mesh;
-    }
-  }
+  // For a second try with the twisted parts' sheets apart: the split only renumbers corners to
+  // copies of points appended after the others (CopyPoint), so these undo it.
+  const std::vector<std::array<int, 3>> unsplitTriangles = mesh.Triangles;
+  const int unsplitPoints = mesh.NumberOfPoints();
   report.SplitEdges = SplitCrowdedEdges(mesh, edges, {}, report.SplitEdgesApart);
   if (report.SplitEdges > 0)
   {
@@ -740,7 +736,13 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
         apart[t] = twisted[c];
       }
     }
-    mesh = std::move(unsplit);
+    mesh.Triangles = unsplitTriangles;
+    mesh.Points.resize(3 * static_cast<size_t>(unsplitPoints));
+    mesh.SourceIds.resize(unsplitPoints);
+    if (!mesh.Density.empty())
+    {
+      mesh.Density.resize(unsplitPoints);
+    }
     const EdgeTable crowded(mesh.Triangles);
     report.SplitEdges = SplitCrowdedEdges(mesh, crowded, apart, report.SplitEdgesApart);
     edges = EdgeTable(mesh.Triangles);
