@@ -89,8 +89,8 @@ public:
   /// The solver works in (x - center) / scale so its unit first step fits any domain. Default:
   /// the box of the sites.
   virtual void SolverFrame(const std::vector<double>& sites, double center[3], double& scale) const;
-  /// Bounds of the L-BFGS-B box, in physical coordinates. Default: the solver frame grown ten
-  /// times (the box then only keeps the solver finite).
+  /// Bounds of the L-BFGS-B box, in physical coordinates. Default: none (infinite), for sites
+  /// free in space or moved onto a surface after each step.
   virtual void SolverBounds(const double center[3], double scale, std::vector<double>& lower,
     std::vector<double>& upper, size_t size) const;
   /// Moves final sites back into the domain where a step left it; true when any moved.

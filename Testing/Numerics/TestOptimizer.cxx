@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace
 {
 class PullProblem : public cvt::Problem
@@ -171,6 +173,29 @@ TEST(Optimizer, LBFGSStartsAgainWhereItStallsFarFromConvergence)
   cvt::OptimizerResult result;
   std::string error;
   ASSERT_TRUE(cvt::RunLBFGS(problem, Start, options, nullptr, result, error)) << error;
+  EXPECT_EQ(result.StopReason, "gradient tolerance reached");
+  for (size_t k = 0; k < Targets.size(); ++k)
+  {
+    EXPECT_NEAR(result.Sites[k], Targets[k], 1e-6);
+  }
+}
+
+TEST(Optimizer, LBFGSIsNotBoxedInByWhereTheSitesStart)
+{
+  // Sites that start within 0.05 of each other converge onto targets up to 0.9 away: problems
+  // without a domain give the solver no bounds (a box ten times the starting sites' extent, as
+  // before, held them within 0.5 of where they started).
+  PullProblem problem(Targets);
+  const cvt::SiteState start{ { 0.0, 0.0, 0.05, 0.0, 0.0, 0.05 }, {} };
+  std::vector<double> lower, upper;
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  problem.SolverBounds(center, 0.05, lower, upper, start.Sites.size());
+  ASSERT_EQ(lower.size(), start.Sites.size());
+  EXPECT_TRUE(std::isinf(lower[0]) && lower[0] < 0.0);
+  EXPECT_TRUE(std::isinf(upper[5]) && upper[5] > 0.0);
+  cvt::OptimizerResult result;
+  std::string error;
+  ASSERT_TRUE(cvt::RunLBFGS(problem, start, ConvergingOptions(0), nullptr, result, error)) << error;
   EXPECT_EQ(result.StopReason, "gradient tolerance reached");
   for (size_t k = 0; k < Targets.size(); ++k)
   {
