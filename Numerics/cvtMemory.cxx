@@ -1,8 +1,14 @@
 #include "cvtMemory.h"
 
+#include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 namespace cvt
 {
@@ -44,6 +50,39 @@ std::string CheckMemory(double bytes, double available, const std::string& what,
   text << what << " needs about " << bytes / 1e9 << " GB of " << where << "; " << available / 1e9
        << " GB are available: " << advice;
   return text.str();
+}
+
+ZeroedPages::ZeroedPages(size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  // Anonymous mappings are zeroed; huge pages need 2 MiB-aligned 2 MiB ranges, so the mapping
+  // is a huge page longer and the memory starts at its first such boundary.
+  constexpr size_t huge = size_t(1) << 21;
+  const size_t length = bytes + huge;
+  void* mapped = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (mapped != MAP_FAILED)
+  {
+    this->Mapped = mapped;
+    this->MappedBytes = length;
+    const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(mapped);
+    this->Aligned = reinterpret_cast<void*>((start + huge - 1) & ~std::uintptr_t(huge - 1));
+    madvise(this->Aligned, bytes, MADV_HUGEPAGE); // a hint: without it, 4 KiB pages
+    return;
+  }
+#endif
+  this->Mapped = this->Aligned = std::calloc(bytes, 1);
+}
+
+ZeroedPages::~ZeroedPages()
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  if (this->MappedBytes > 0)
+  {
+    munmap(this->Mapped, this->MappedBytes);
+    return;
+  }
+#endif
+  std::free(this->Mapped);
 }
 
 } // namespace cvt

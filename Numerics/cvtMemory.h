@@ -5,6 +5,7 @@
 
 #include "cvtNumericsModule.h" // for export macro
 
+#include <cstddef>
 #include <string>
 
 namespace cvt
@@ -21,6 +22,28 @@ CVTNUMERICS_EXPORT double ResidentMemory();
 /// "<what> needs about N GB of <where>; M GB are available: <advice>".
 CVTNUMERICS_EXPORT std::string CheckMemory(double bytes, double available, const std::string& what,
   const std::string& where, const std::string& advice);
+
+/// Zeroed memory for a large table touched at scattered places, on the system's huge pages where
+/// it has them (Linux's transparent huge pages, asked for by madvise): the first touch of each
+/// page costs a page fault, and on these virtual machines one costs about 25 microseconds, so a
+/// 23 MB table on 4 KiB pages took 0.15 s to fill with a few thousand entries and takes a few
+/// milliseconds on 2 MiB ones. Elsewhere it is plain calloc'ed memory.
+class CVTNUMERICS_EXPORT ZeroedPages
+{
+public:
+  explicit ZeroedPages(size_t bytes);
+  ~ZeroedPages();
+  ZeroedPages(const ZeroedPages&) = delete;
+  ZeroedPages& operator=(const ZeroedPages&) = delete;
+
+  /// The memory (aligned to at least 16 bytes); null when it could not be had.
+  void* Data() const { return this->Aligned; }
+
+private:
+  void* Mapped = nullptr; // what the system gave
+  size_t MappedBytes = 0; // 0: calloc'ed
+  void* Aligned = nullptr;
+};
 
 } // namespace cvt
 

@@ -10,6 +10,7 @@
 #include <mutex>
 
 #include "cvtGeometry.h"
+#include "cvtMemory.h"
 #include "cvtPointCloud.h"
 
 namespace cvt
@@ -225,16 +226,17 @@ private:
 /// Answers of earlier queries (SurfaceProjector::SetRememberAnswers): a direct-mapped table, each
 /// query's slot chosen by its hash and overwritten by the next query of that slot, so nothing is
 /// allocated per answer and a lookup is one memory access; a lock per group of slots for
-/// queries in parallel. The table is zeroed by the system as it is touched (calloc), and a slot
-/// holds its query's guess plus 2, so a zero slot is empty.
+/// queries in parallel. The table is zeroed by the system as it is touched, on huge pages
+/// (ZeroedPages: a remesh's answers touch most of its 4 KiB pages, bunny00 at 1000 sites 8,520
+/// slots), and a slot holds its query's guess plus 2, so a zero slot is empty.
 class AnswerCache
 {
 public:
   AnswerCache()
-    : Slots(static_cast<Slot*>(std::calloc(SlotCount, sizeof(Slot))))
+    : Memory(SlotCount * sizeof(Slot))
+    , Slots(static_cast<Slot*>(Memory.Data()))
   {
   }
-  ~AnswerCache() { std::free(this->Slots); }
   AnswerCache(const AnswerCache&) = delete;
   AnswerCache& operator=(const AnswerCache&) = delete;
 
@@ -295,6 +297,7 @@ private:
     return static_cast<size_t>(h & (SlotCount - 1));
   }
 
+  ZeroedPages Memory;
   Slot* Slots;
   std::mutex Locks[LockCount];
 };
