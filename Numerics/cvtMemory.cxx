@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <unistd.h>
 
@@ -55,22 +56,28 @@ std::string CheckMemory(double bytes, double available, const std::string& what,
 ZeroedPages::ZeroedPages(size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  // Anonymous mappings are zeroed; huge pages need 2 MiB-aligned 2 MiB ranges, so the mapping
-  // is a huge page longer and the memory starts at its first such boundary.
+  // Anonymous mappings are zeroed; huge pages need 2 MiB-aligned 2 MiB ranges, so the memory is
+  // rounded up to whole huge pages and the mapping is a huge page longer, the memory starting at
+  // its first such boundary.
   constexpr size_t huge = size_t(1) << 21;
-  const size_t length = bytes + huge;
-  void* mapped = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (mapped != MAP_FAILED)
+  if (bytes <= std::numeric_limits<size_t>::max() - 2 * huge)
   {
-    this->Mapped = mapped;
-    this->MappedBytes = length;
-    const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(mapped);
-    this->Aligned = reinterpret_cast<void*>((start + huge - 1) & ~std::uintptr_t(huge - 1));
-    madvise(this->Aligned, bytes, MADV_HUGEPAGE); // a hint: without it, 4 KiB pages
-    return;
+    const size_t rounded = (bytes + huge - 1) & ~(huge - 1);
+    const size_t length = rounded + huge;
+    void* mapped =
+      mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (mapped != MAP_FAILED)
+    {
+      this->Mapped = mapped;
+      this->MappedBytes = length;
+      const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(mapped);
+      this->Aligned = reinterpret_cast<void*>((start + huge - 1) & ~std::uintptr_t(huge - 1));
+      madvise(this->Aligned, rounded, MADV_HUGEPAGE); // a hint: without it, 4 KiB pages
+      return;
+    }
   }
 #endif
-  this->Mapped = this->Aligned = std::calloc(bytes, 1);
+  this->Mapped = this->Aligned = std::calloc(bytes, 1); // null when too large
 }
 
 ZeroedPages::~ZeroedPages()

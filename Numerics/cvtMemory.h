@@ -25,10 +25,11 @@ CVTNUMERICS_EXPORT std::string CheckMemory(double bytes, double available, const
 
 /// Zeroed memory for a large table touched at scattered places, on the system's huge pages where
 /// it has them (Linux's transparent huge pages, asked for by madvise): the first touch of each
-/// page costs a page fault, and on these virtual machines one costs about 23 microseconds: a
-/// 23 MB table on 4 KiB pages took 0.14 s to fill with 8,520 entries spread over most of its
-/// 5,700 pages (bunny00 at 1000 sites), on 2 MiB ones a few milliseconds. Elsewhere it is plain
-/// calloc'ed memory.
+/// page costs a page fault, and on these virtual machines one costs 9 to 23 microseconds (a
+/// 64 MiB write, one byte per page: 16,384 faults, 0.14 s): the surface projector's 21 MB answer
+/// table on 4 KiB pages took 0.14 s more to fill with 8,520 answers spread over most of its 5,120
+/// pages (bunny00 at 1000 sites), on 2 MiB pages (10 of them) a few milliseconds. Elsewhere it
+/// is plain calloc'ed memory.
 class CVTNUMERICS_EXPORT ZeroedPages
 {
 public:

@@ -277,7 +277,7 @@ public:
   }
 
 private:
-  static constexpr size_t SlotCount = size_t(1) << 18; // 88 bytes each
+  static constexpr size_t SlotCount = size_t(1) << 18; // 80 bytes each: 20 MiB
   static constexpr size_t LockCount = 64;
   struct Slot
   {

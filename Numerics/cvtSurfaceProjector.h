@@ -46,7 +46,7 @@ public:
   double FarthestCentroid(const std::vector<std::array<const double*, 3>>& triangles) const;
 
   /// From now on, a query asked before (the same point and guess) is answered from memory (a
-  /// table of 262,144 answers, 23 MB at most, the newest query of a slot kept), or no longer
+  /// table of 262,144 answers, 21 MB at most, the newest query of a slot kept), or no longer
   /// with false; not while queries run. For a surface asked the same points again and again, as
   /// the input is by the remeshes of fidelity candidates, each a whole new remesh whose vertices,
   /// edges and sample points are mostly those of the one before (mpi at 1000 sites: 814,579
