@@ -442,7 +442,12 @@ int SplitCrowdedEdges(
   return split;
 }
 
-std::vector<int> SplitPinchedPoints(int numberOfPoints, std::vector<std::array<int, 3>>& triangles)
+namespace
+{
+/// SplitPinchedPoints with the edges of `triangles` known: `edges` may have been built before
+/// triangles were turned over (it reads only the edges' points and triangles).
+std::vector<int> SplitPinchedPointsAlong(
+  const EdgeTable& edges, int numberOfPoints, std::vector<std::array<int, 3>>& triangles)
 {
   // Corners (triangle, point) of the two triangles of each edge are joined at the edge's end
   // points; each group of corners beyond a point's first becomes a copy of the point.
@@ -451,7 +456,6 @@ std::vector<int> SplitPinchedPoints(int numberOfPoints, std::vector<std::array<i
     const auto& tri = triangles[t];
     return 3 * t + (tri[0] == p ? 0 : (tri[1] == p ? 1 : 2));
   };
-  const EdgeTable edges(triangles);
   UnionFind fans(3 * triangles.size());
   for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
   {
@@ -492,6 +496,12 @@ std::vector<int> SplitPinchedPoints(int numberOfPoints, std::vector<std::array<i
     }
   }
   return copied;
+}
+} // namespace
+
+std::vector<int> SplitPinchedPoints(int numberOfPoints, std::vector<std::array<int, 3>>& triangles)
+{
+  return SplitPinchedPointsAlong(EdgeTable(triangles), numberOfPoints, triangles);
 }
 
 namespace
@@ -784,7 +794,9 @@ std::string RepairSurfaceMesh(SurfaceMesh& mesh, MeshRepairReport& report)
     }
     report.FlippedTriangles += flipped;
   }
-  const std::vector<int> copied = SplitPinchedPoints(mesh.NumberOfPoints(), mesh.Triangles);
+  // The edges are those of the orientation's table: turning triangles over keeps them.
+  const std::vector<int> copied =
+    SplitPinchedPointsAlong(edges, mesh.NumberOfPoints(), mesh.Triangles);
   for (int p : copied)
   {
     CopyPoint(mesh, p); // numbered as SplitPinchedPoints expects: in order after the others

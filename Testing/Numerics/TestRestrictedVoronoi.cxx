@@ -1778,6 +1778,19 @@ TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
   EXPECT_EQ(cvt::RepairSurfaceMesh(bowtie, report), "");
   EXPECT_EQ(report.SplitPoints, 1);
   EXPECT_EQ(cvt::ComputeMeshTopology(bowtie.NumberOfPoints(), bowtie.Triangles).Components, 2);
+  // The same with two triangles to each side, one of each pair turned over: the repair turns
+  // them back and splits the point with the edges found before (turning keeps the edges).
+  cvt::SurfaceMesh turnedBowtie;
+  turnedBowtie.Points = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 0, 0, -1, -1, 0, 0, -1, 0 };
+  turnedBowtie.Triangles = { { 0, 1, 2 }, { 0, 3, 2 }, { 0, 4, 5 }, { 0, 6, 5 } };
+  EXPECT_EQ(cvt::RepairSurfaceMesh(turnedBowtie, report), "");
+  EXPECT_EQ(report.SplitPoints, 1);
+  EXPECT_EQ(report.FlippedTriangles, 2);
+  const cvt::MeshTopology turnedParts =
+    cvt::ComputeMeshTopology(turnedBowtie.NumberOfPoints(), turnedBowtie.Triangles);
+  EXPECT_EQ(turnedParts.Components, 2);
+  EXPECT_EQ(turnedParts.BoundaryLoops, 2);
+  EXPECT_EQ(turnedParts.EulerCharacteristic, 2);
 
   // Three triangles on one edge: the third (the fin) is detached from it.
   cvt::SurfaceMesh fin;
