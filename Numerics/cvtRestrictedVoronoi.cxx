@@ -88,12 +88,16 @@ constexpr double FeatureAngleDegrees = 60.0;
 constexpr double MinimumFeatureExtent = 0.15;
 
 /// The dual pass's pieces (one per cell and triangle) in triangle order: those of triangle t
-/// are [First[t], First[t + 1]), a few at most. Their sites side by side, for lookups far from
-/// the piece.
+/// are [First[t], First[t + 1]), a few at most. What the joins and Euler characteristics read of
+/// them side by side (a neighbour's mask read from its SiteContact, 120 bytes and out of cache,
+/// took 60% of FindNonDiskParts).
 struct PieceIndex
 {
   std::vector<int> First;
+  std::vector<int> Triangle;
   std::vector<int> Site;
+  std::vector<std::uint8_t> EdgeMask;   // SiteContact::EdgeMask
+  std::vector<std::uint8_t> CornerMask; // SiteContact::CornerMask
   /// The piece of `site`'s cell in `triangle`, or -1.
   int Of(int site, int triangle) const
   {
@@ -177,12 +181,26 @@ struct RestrictedVoronoi::Internals
   void Barycentric(int t, const double* p, double* lambda) const;
   /// Appends the contact of `site`'s piece `polygon` of triangle t to `list`.
   void Contact(int t, int site, const Polygon& polygon, ContactList& list) const;
+  /// ComputeDual's arrays per piece, kept from one call to the next: made afresh, their pages
+  /// were faulted in again on some calls (1654 faults a dual on armadillo at 5000 sites, about
+  /// 10 us each here).
+  struct DualWork
+  {
+    std::vector<const SiteContact*> Pieces;               // in triangle order (Index)
+    std::vector<const std::array<double, 6>*> SegmentsOf; // per piece: its border segments
+    PieceIndex Index;
+    std::vector<int> Parent;               // union-find of the pieces into cell parts
+    std::vector<int> HolderOfPoint;        // per mesh point: the first piece holding it
+    std::vector<std::uint8_t> FirstHolder; // bit k: the first of its cell to hold corner k
+    std::vector<int> VertexOfRoot;         // per union-find root: its dual vertex
+    std::vector<int> VertexOfPiece;        // the dual vertex (cell part) of each piece
+    std::vector<int> PieceEuler;           // FindNonDiskParts: what each piece adds
+    std::vector<std::uint8_t> Unpaired;    // bit k: edge k has no triangle across
+  };
+  DualWork Work;
   /// The Euler characteristic of each cell part, and where sites would cut the parts that are
-  /// not disks. `pieces` are in triangle order (`index`); bit k of firstHolder: the piece is the
-  /// first of its cell to hold its triangle's corner k.
-  void FindNonDiskParts(const std::vector<const SiteContact*>& pieces, const PieceIndex& index,
-    const std::vector<int>& vertexOfPiece, const std::vector<std::uint8_t>& firstHolder,
-    RestrictedDual& dual) const;
+  /// not disks, from the pieces in `work`.
+  void FindNonDiskParts(DualWork& work, RestrictedDual& dual) const;
 };
 
 //------------------------------------------------------------------------------
@@ -469,8 +487,9 @@ void RestrictedVoronoi::Internals::Contact(
   contact.TouchesBorder = false;
   contact.EdgeMask = 0;
   contact.CornerMask = 0;
-  contact.Area = 0.0;
-  std::fill(contact.Centroid, contact.Centroid + 3, 0.0);
+  // Summed in locals: the contact is new memory the polygon might alias, so sums kept in it
+  // were stored and read back on every step.
+  double pieceArea = 0.0, centroid[3] = { 0.0, 0.0, 0.0 };
   for (int v = 1; v + 1 < polygon.Size; ++v)
   {
     const double* p0 = polygon.V[0].P;
@@ -481,16 +500,16 @@ void RestrictedVoronoi::Internals::Contact(
     double cross[3];
     Cross(e1, e2, cross);
     const double area = 0.5 * std::sqrt(Dot(cross, cross));
-    contact.Area += area;
+    pieceArea += area;
     for (int k = 0; k < 3; ++k)
     {
-      contact.Centroid[k] += area * (p0[k] + polygon.V[v].P[k] + polygon.V[v + 1].P[k]) / 3.0;
+      centroid[k] += area * (p0[k] + polygon.V[v].P[k] + polygon.V[v + 1].P[k]) / 3.0;
     }
   }
+  contact.Area = pieceArea;
   for (int k = 0; k < 3; ++k)
   {
-    contact.Centroid[k] =
-      contact.Area > 0.0 ? contact.Centroid[k] / contact.Area : polygon.V[0].P[k];
+    contact.Centroid[k] = pieceArea > 0.0 ? centroid[k] / pieceArea : polygon.V[0].P[k];
   }
   // The projection onto the plane, when it falls inside the (convex) polygon.
   const double height = (s[0] - polygon.V[0].P[0]) * n[0] + (s[1] - polygon.V[0].P[1]) * n[1] +
@@ -568,10 +587,12 @@ void RestrictedVoronoi::Internals::Contact(
 // characteristic (with compact support) adds up over such a union. A convex piece without its
 // triangle's border counts 1 - (its edge segments without their ends) - (its corners); an edge
 // segment counts 1 - (the edge's end points it holds); a point counts 1.
-void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const SiteContact*>& pieces,
-  const PieceIndex& index, const std::vector<int>& vertexOfPiece,
-  const std::vector<std::uint8_t>& firstHolder, RestrictedDual& dual) const
+void RestrictedVoronoi::Internals::FindNonDiskParts(DualWork& work, RestrictedDual& dual) const
 {
+  const std::vector<const SiteContact*>& pieces = work.Pieces;
+  const PieceIndex& index = work.Index;
+  const std::vector<int>& vertexOfPiece = work.VertexOfPiece;
+  const std::vector<std::uint8_t>& firstHolder = work.FirstHolder;
   const size_t vertexCount = dual.Sites.size();
   dual.EulerCharacteristic.assign(vertexCount, 0);
   dual.SplitPoints.clear();
@@ -581,49 +602,54 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
   // of them when the other triangle's piece of the cell holds it too and with the same ends.
   // Edges of one triangle or of more than two are keys (first point, second point, what it adds
   // + 1) sorted by part: few.
-  std::vector<int> pieceEuler(pieces.size());
-  std::vector<std::uint8_t> unpaired(pieces.size(), 0); // bit k: edge k has no triangle across
+  std::vector<int>& pieceEuler = work.PieceEuler;
+  std::vector<std::uint8_t>& unpaired = work.Unpaired;
+  pieceEuler.resize(pieces.size());
+  unpaired.assign(pieces.size(), 0);
   cvt::For(0, static_cast<vtkIdType>(pieces.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType p = begin; p < end; ++p)
       {
-        const SiteContact& c = *pieces[p];
-        const auto& tri = this->Mesh.Triangles[c.Triangle];
+        const int triangle = index.Triangle[p];
+        const std::uint8_t cornerMask = index.CornerMask[p], edgeMask = index.EdgeMask[p];
+        const auto& tri = this->Mesh.Triangles[triangle];
         int euler = 1;
         for (int k = 0; k < 3; ++k)
         {
           const int next = (k + 1) % 3;
-          const int corner = (c.CornerMask >> k) & 1;
+          const int corner = (cornerMask >> k) & 1;
           if (corner)
           {
             euler -= 1 - ((firstHolder[p] >> k) & 1);
           }
-          if (!((c.EdgeMask >> k) & 1))
+          if (!((edgeMask >> k) & 1))
           {
             continue;
           }
-          const int ends = corner + ((c.CornerMask >> next) & 1);
+          const int ends = corner + ((cornerMask >> next) & 1);
           euler -= 1 - ends;
-          const int across = this->Adjacent[c.Triangle][k];
+          const int across = this->Adjacent[triangle][k];
           if (across < 0)
           {
             unpaired[p] |= static_cast<std::uint8_t>(1u << k);
             continue;
           }
-          bool sharedFirst = false; // the other piece holds it alike and comes first
-          const int q = index.Of(c.Site, across);
+          // The other piece holds the edge alike and comes first (only a triangle before this
+          // one can: no lookup otherwise).
+          bool sharedFirst = false;
+          const int q = across < triangle ? index.Of(index.Site[p], across) : -1;
           const auto& other = this->Mesh.Triangles[across];
           for (int j = 0; j < 3 && q >= 0; ++j)
           {
             const int after = (j + 1) % 3;
             const bool sameEdge = std::minmax(other[j], other[after]) ==
               std::minmax(tri[k], tri[next]); // either way round
-            if (sameEdge && ((pieces[q]->EdgeMask >> j) & 1))
+            if (sameEdge && ((index.EdgeMask[q] >> j) & 1))
             {
               const int otherEnds =
-                ((pieces[q]->CornerMask >> j) & 1) + ((pieces[q]->CornerMask >> after) & 1);
-              sharedFirst = otherEnds == ends && across < c.Triangle;
+                ((index.CornerMask[q] >> j) & 1) + ((index.CornerMask[q] >> after) & 1);
+              sharedFirst = otherEnds == ends;
             }
           }
           if (!sharedFirst)
@@ -643,9 +669,9 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(const std::vector<const Site
     {
       if ((unpaired[p] >> k) & 1)
       {
-        const auto& tri = this->Mesh.Triangles[pieces[p]->Triangle];
+        const auto& tri = this->Mesh.Triangles[index.Triangle[p]];
         const int next = (k + 1) % 3;
-        const int ends = ((pieces[p]->CornerMask >> k) & 1) + ((pieces[p]->CornerMask >> next) & 1);
+        const int ends = ((index.CornerMask[p] >> k) & 1) + ((index.CornerMask[p] >> next) & 1);
         otherEdges.emplace_back(part,
           (static_cast<std::uint64_t>(std::min(tri[k], tri[next])) << 33) |
             (static_cast<std::uint64_t>(std::max(tri[k], tri[next])) << 2) |
@@ -1314,64 +1340,61 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   }
   d.Sweep(true, 0, d.BlockCount);
   dual = RestrictedDual();
-  // The pieces (one per cell and triangle), in block order, hence in triangle order (indexed
-  // below by triangle and cell: PieceIndex).
-  std::vector<const SiteContact*> pieces;
-  std::vector<const std::array<double, 6>*> segmentsOf; // per piece: its border segments
-  size_t pieceCount = 0;
-  for (const ContactList& block : d.BlockContacts)
+  // The pieces (one per cell and triangle), in block order, hence in triangle order (a block
+  // is a range of triangles, swept in order; indexed below by triangle and cell: PieceIndex).
+  // Listed block by block in parallel: each contact is read (for its segments), out of cache.
+  Internals::DualWork& work = d.Work;
+  std::vector<const SiteContact*>& pieces = work.Pieces;
+  std::vector<const std::array<double, 6>*>& segmentsOf = work.SegmentsOf;
+  const size_t blockCount = d.BlockContacts.size();
+  std::vector<size_t> blockStart(blockCount + 1, 0);
+  for (size_t block = 0; block < blockCount; ++block)
   {
-    pieceCount += block.Contacts.size();
+    blockStart[block + 1] = blockStart[block] + d.BlockContacts[block].Contacts.size();
   }
-  pieces.reserve(pieceCount); // a million pieces for a large mesh: no copies as they are listed
-  segmentsOf.reserve(pieceCount);
-  for (const ContactList& block : d.BlockContacts)
-  {
-    for (const SiteContact& c : block.Contacts)
+  pieces.resize(blockStart.back());
+  segmentsOf.resize(blockStart.back());
+  cvt::For(0, static_cast<vtkIdType>(blockCount), 1,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      pieces.push_back(&c);
-      segmentsOf.push_back(block.Segments.data() + c.FirstSegment);
-    }
-  }
-  const auto byTriangle = [](const SiteContact* a, const SiteContact* b)
-  { return a->Triangle < b->Triangle; };
-  if (!std::is_sorted(pieces.begin(), pieces.end(), byTriangle))
-  {
-    std::vector<size_t> order(pieces.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-      [&pieces, &byTriangle](size_t a, size_t b) { return byTriangle(pieces[a], pieces[b]); });
-    std::vector<const SiteContact*> sortedPieces(pieces.size());
-    std::vector<const std::array<double, 6>*> sortedSegments(pieces.size());
-    for (size_t i = 0; i < order.size(); ++i)
-    {
-      sortedPieces[i] = pieces[order[i]];
-      sortedSegments[i] = segmentsOf[order[i]];
-    }
-    pieces.swap(sortedPieces);
-    segmentsOf.swap(sortedSegments);
-  }
+      for (vtkIdType block = begin; block < end; ++block)
+      {
+        const ContactList& list = d.BlockContacts[block];
+        for (size_t i = 0; i < list.Contacts.size(); ++i)
+        {
+          pieces[blockStart[block] + i] = &list.Contacts[i];
+          segmentsOf[blockStart[block] + i] = list.Segments.data() + list.Contacts[i].FirstSegment;
+        }
+      }
+    });
   const int triangleCount = d.Mesh.NumberOfTriangles();
-  PieceIndex index;
-  index.First.assign(triangleCount + 1, 0);
-  for (const SiteContact* c : pieces)
-  {
-    ++index.First[c->Triangle + 1];
-  }
-  std::partial_sum(index.First.begin(), index.First.end(), index.First.begin());
+  PieceIndex& index = work.Index;
+  index.Triangle.resize(pieces.size());
   index.Site.resize(pieces.size());
+  index.EdgeMask.resize(pieces.size());
+  index.CornerMask.resize(pieces.size());
   cvt::For(0, static_cast<vtkIdType>(pieces.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType p = begin; p < end; ++p)
       {
+        index.Triangle[p] = pieces[p]->Triangle;
         index.Site[p] = pieces[p]->Site;
+        index.EdgeMask[p] = pieces[p]->EdgeMask;
+        index.CornerMask[p] = pieces[p]->CornerMask;
       }
     });
+  index.First.assign(triangleCount + 1, 0);
+  for (int triangle : index.Triangle)
+  {
+    ++index.First[triangle + 1];
+  }
+  std::partial_sum(index.First.begin(), index.First.end(), index.First.begin());
   // A restricted cell can have several connected parts (a thin plate: one on each side). Its
   // pieces are joined across the mesh edges they share; each part is a vertex of the dual
   // (the "multinerve"), so the remesh keeps the plate's two sides apart.
-  std::vector<int> parent(pieces.size());
+  std::vector<int>& parent = work.Parent;
+  parent.resize(pieces.size());
   std::iota(parent.begin(), parent.end(), 0);
   const auto find = [&parent](int p)
   {
@@ -1385,7 +1408,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   {
     for (int e = 0; e < 3; ++e)
     {
-      const int across = (pieces[p]->EdgeMask >> e) & 1 ? d.Adjacent[pieces[p]->Triangle][e] : -1;
+      const int across = (index.EdgeMask[p] >> e) & 1 ? d.Adjacent[index.Triangle[p]][e] : -1;
       if (across < 0)
       {
         continue;
@@ -1401,16 +1424,18 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   // teeth, a cell around a vertex).
   // The first piece holding each point; a point held by several cells (a tie) is rare and
   // looked up by cell.
-  std::vector<int> holderOfPoint(d.Mesh.NumberOfPoints(), -1);
+  std::vector<int>& holderOfPoint = work.HolderOfPoint;
+  holderOfPoint.assign(d.Mesh.NumberOfPoints(), -1);
   std::unordered_map<std::uint64_t, int> otherHolders;
-  std::vector<std::uint8_t> firstHolder(pieces.size(), 0); // bit k: first to hold corner k
+  std::vector<std::uint8_t>& firstHolder = work.FirstHolder;
+  firstHolder.assign(pieces.size(), 0);
   for (size_t p = 0; p < pieces.size(); ++p)
   {
     for (int k = 0; k < 3; ++k)
     {
-      if ((pieces[p]->CornerMask >> k) & 1)
+      if ((index.CornerMask[p] >> k) & 1)
       {
-        const int point = d.Mesh.Triangles[pieces[p]->Triangle][k];
+        const int point = d.Mesh.Triangles[index.Triangle[p]][k];
         int& holder = holderOfPoint[point];
         int other = -1;
         if (holder < 0)
@@ -1438,19 +1463,28 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
       }
     }
   }
-  std::vector<int> vertexOfRoot(pieces.size(), -1), vertexOfPiece(pieces.size());
+  std::vector<int>& vertexOfRoot = work.VertexOfRoot;
+  std::vector<int>& vertexOfPiece = work.VertexOfPiece;
+  vertexOfRoot.assign(pieces.size(), -1);
+  vertexOfPiece.resize(pieces.size());
   for (size_t p = 0; p < pieces.size(); ++p)
   {
     int& vertex = vertexOfRoot[find(static_cast<int>(p))];
     if (vertex < 0)
     {
       vertex = static_cast<int>(dual.Sites.size());
-      dual.Sites.push_back(pieces[p]->Site);
+      dual.Sites.push_back(index.Site[p]);
     }
     vertexOfPiece[p] = vertex;
   }
   const size_t vertexCount = dual.Sites.size();
   std::vector<std::array<int, 3>> triples;
+  size_t tripleCount = 0;
+  for (const auto& block : d.BlockTriples)
+  {
+    tripleCount += block.size();
+  }
+  triples.reserve(tripleCount); // no copies as they are listed
   for (const auto& block : d.BlockTriples)
   {
     for (const auto& t : block)
@@ -1593,7 +1627,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         dual.BoundaryTriangles[i], &dual.BoundaryPoints[3 * i], &dual.BoundaryBarycentric[3 * i]);
     }
   }
-  d.FindNonDiskParts(pieces, index, vertexOfPiece, firstHolder, dual);
+  d.FindNonDiskParts(work, dual);
   return true;
 }
 

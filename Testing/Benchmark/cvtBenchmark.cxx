@@ -25,6 +25,11 @@
 //            ("scaling,engine,side,sites,ms_per_iteration,resident_mib,iterations"), drawn by
 //            Examples/plot_scaling.py. A software OpenGL that needs more than 5 s for one
 //            iteration is measured once and left out of the larger sizes.
+//   dual:    the exact CPU surface engine's restricted Delaunay dual (cvt::RestrictedVoronoi::
+//            ComputeDual, which the remesh's topology and fidelity rounds call once per candidate)
+//            against its cell sums (ComputeCellSums, an optimiser evaluation) in the same process,
+//            milliseconds, medians of 21: on an OFF mesh (repaired as the remesh filter does) or
+//            a 200 x 100 torus grid (40,000 triangles), SITES sites (1000) after 5 Lloyd steps.
 //   lifetime: the filters on the OpenGL engine (image filter at 512x512, surface filter at
 //            1024x512, 1000 sites, 2 Lloyd iterations; medians of 3): the first update, and a
 //            second update after changing NumberOfSites (1000 -> 1100) by the same filter (it keeps
@@ -32,21 +37,27 @@
 //            made before).
 // Usage: cvtBenchmark [timing|targets|surface|cpu|lifetime|all]
 //        cvtBenchmark scaling [MAX_SIDE (4096)] [MAX_SITES (100000)]
+//        cvtBenchmark dual [MESH.off|torus] [SITES (1000)]
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
 #include "cvtMemory.h"
 #include "cvtProblems.h"
 #include "cvtQuality.h"
+#include "cvtRestrictedVoronoi.h"
 #include "cvtSampling.h"
+#include "cvtSurfaceMesh.h"
 #include "cvtThreads.h"
 #include "vtkCVTGeometryImageSource.h"
 #include "vtkCVTImageFilter.h"
+#include "vtkCVTOFFReader.h"
 #include "vtkCVTOpenGLEngine.h"
 #include "vtkCVTSurfaceEngine.h"
 #include "vtkCVTSurfaceFilter.h"
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -591,6 +602,115 @@ bool SurfaceTarget()
   return true;
 }
 
+/// The surface to time the dual on: an OFF file's polygons (fans), repaired, or a torus grid.
+bool DualMesh(const std::string& path, cvt::SurfaceMesh& mesh)
+{
+  if (path == "torus")
+  {
+    const int columns = 200, rows = 100;
+    const double pi = 3.14159265358979323846;
+    for (int j = 0; j < rows; ++j)
+    {
+      for (int i = 0; i < columns; ++i)
+      {
+        const double u = 2 * pi * i / columns, v = 2 * pi * j / rows;
+        const double r = 1.0 + 0.4 * std::cos(v);
+        mesh.Points.insert(
+          mesh.Points.end(), { r * std::cos(u), r * std::sin(u), 0.4 * std::sin(v) });
+        const int a = j * columns + i, b = j * columns + (i + 1) % columns;
+        const int c = ((j + 1) % rows) * columns + i,
+                  d = ((j + 1) % rows) * columns + (i + 1) % columns;
+        mesh.Triangles.push_back({ a, b, d });
+        mesh.Triangles.push_back({ a, d, c });
+      }
+    }
+    return true;
+  }
+  vtkNew<vtkCVTOFFReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* polyData = reader->GetOutput();
+  if (polyData->GetNumberOfPolys() == 0)
+  {
+    std::fprintf(stderr, "no polygons read from %s\n", path.c_str());
+    return false;
+  }
+  for (vtkIdType p = 0; p < polyData->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    polyData->GetPoint(p, x);
+    mesh.Points.insert(mesh.Points.end(), x, x + 3);
+  }
+  vtkNew<vtkIdList> ids;
+  vtkCellArray* polys = polyData->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+  {
+    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
+    {
+      mesh.Triangles.push_back({ static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(k)),
+        static_cast<int>(ids->GetId(k + 1)) });
+    }
+  }
+  cvt::MeshRepairReport report;
+  const std::string error = cvt::RepairSurfaceMesh(mesh, report);
+  if (!error.empty())
+  {
+    std::fprintf(stderr, "%s: %s\n", path.c_str(), error.c_str());
+    return false;
+  }
+  return true;
+}
+
+bool DualTiming(const std::string& path, int siteCount)
+{
+  cvt::SurfaceMesh mesh;
+  if (siteCount < 3 || !DualMesh(path, mesh))
+  {
+    return false;
+  }
+  std::vector<double> sites = cvt::SampleMeshSites(mesh, siteCount, 1);
+  cvt::RestrictedVoronoi engine;
+  cvt::CellSums sums;
+  for (int step = 0; step < 5; ++step) // Lloyd: cells of the sizes the remesh sees
+  {
+    if (!engine.SetMesh(mesh) || !engine.SetSites(sites) || !engine.ComputeCellSums(sums))
+    {
+      std::fprintf(stderr, "engine failed: %s\n", engine.GetLastError().c_str());
+      return false;
+    }
+    for (size_t i = 0; i < sums.Mass.size(); ++i)
+    {
+      if (sums.Mass[i] > 0.0) // moments are about the site
+      {
+        sites[3 * i] += sums.MomentX[i] / sums.Mass[i];
+        sites[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
+        sites[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
+      }
+    }
+  }
+  engine.SetSites(sites);
+  std::vector<double> dualTimes, sumTimes;
+  cvt::RestrictedDual dual;
+  for (int k = 0; k < 21; ++k)
+  {
+    auto start = Clock::now();
+    if (!engine.ComputeDual(dual))
+    {
+      std::fprintf(stderr, "engine failed: %s\n", engine.GetLastError().c_str());
+      return false;
+    }
+    dualTimes.push_back(1e3 * SecondsSince(start));
+    start = Clock::now();
+    engine.ComputeCellSums(sums);
+    sumTimes.push_back(1e3 * SecondsSince(start));
+  }
+  std::printf("%s: %d triangles, %d sites: dual %.2f ms, cell sums %.2f ms, ratio %.2f (%zu dual "
+              "triangles, %d thin parts)\n",
+    path.c_str(), mesh.NumberOfTriangles(), siteCount, Median(dualTimes), Median(sumTimes),
+    Median(dualTimes) / Median(sumTimes), dual.Triangles.size(), dual.ThinParts);
+  return true;
+}
+
 int main(int argc, char* argv[])
 {
   const std::string what = argc > 1 ? argv[1] : "all";
@@ -605,11 +725,16 @@ int main(int argc, char* argv[])
     }
     return Scaling(side, sites) ? 0 : 1;
   }
+  if (what == "dual")
+  {
+    return DualTiming(argc > 2 ? argv[2] : "torus", argc > 3 ? std::atoi(argv[3]) : 1000) ? 0 : 1;
+  }
   if (what != "timing" && what != "targets" && what != "surface" && what != "cpu" &&
     what != "lifetime" && what != "all")
   {
     std::fprintf(stderr,
-      "usage: %s [timing|targets|surface|cpu|lifetime|all] | scaling [MAX_SIDE] [MAX_SITES]\n",
+      "usage: %s [timing|targets|surface|cpu|lifetime|all] | scaling [MAX_SIDE] [MAX_SITES] | "
+      "dual [MESH.off|torus] [SITES]\n",
       argv[0]);
     return 2;
   }

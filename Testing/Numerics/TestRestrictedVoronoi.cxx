@@ -601,6 +601,46 @@ TEST(RestrictedVoronoi, DualFindsCellPartsThatAreNotDisks)
   EXPECT_TRUE(dual.SplitPoints.empty());
 }
 
+TEST(RestrictedVoronoi, DualOfAnEngineReusedIsThatOfAFreshEngine)
+{
+  // The dual keeps its work arrays from one call to the next (per piece and per mesh point): an
+  // engine that computed duals of other meshes and site counts, larger and smaller, must give,
+  // to the bit, the dual of a fresh engine. The tube's cells are rings, the open square's meet
+  // its border.
+  struct Job
+  {
+    cvt::SurfaceMesh Mesh;
+    std::vector<double> Sites;
+  };
+  std::vector<Job> jobs;
+  jobs.push_back({ Sphere(4), SitesNearSphere(300, 5) });
+  jobs.push_back({ Tube(0.05, 24, 40), { 0, 0, 0.125, 0, 0, 0.375, 0, 0, 0.625, 0, 0, 0.875 } });
+  jobs.push_back({ Sphere(3), SitesNearSphere(40, 6) });
+  jobs.push_back({ FlatSquare(12, 0.0, 1.0),
+    { 0.2, 0.3, 0, 0.7, 0.2, 0, 0.5, 0.8, 0, 0.45, 0.5, 0.1, 0.1, 0.9, 0 } });
+  jobs.push_back({ Sphere(4), SitesNearSphere(120, 7) });
+  cvt::RestrictedVoronoi reused;
+  for (size_t j = 0; j < jobs.size(); ++j)
+  {
+    cvt::RestrictedVoronoi fresh;
+    cvt::RestrictedDual a, b;
+    ASSERT_TRUE(reused.SetMesh(jobs[j].Mesh) && reused.SetSites(jobs[j].Sites));
+    ASSERT_TRUE(reused.ComputeDual(a));
+    ASSERT_TRUE(fresh.SetMesh(jobs[j].Mesh) && fresh.SetSites(jobs[j].Sites));
+    ASSERT_TRUE(fresh.ComputeDual(b));
+    EXPECT_FALSE(b.Sites.empty()) << "job " << j;
+    EXPECT_EQ(a.Sites, b.Sites) << "job " << j;
+    EXPECT_EQ(a.Triangles, b.Triangles) << "job " << j;
+    EXPECT_EQ(a.SurfacePoints, b.SurfacePoints) << "job " << j;
+    EXPECT_EQ(a.Parts, b.Parts) << "job " << j;
+    EXPECT_EQ(a.Pinned, b.Pinned) << "job " << j;
+    EXPECT_EQ(a.BoundaryPoints, b.BoundaryPoints) << "job " << j;
+    EXPECT_EQ(a.EulerCharacteristic, b.EulerCharacteristic) << "job " << j;
+    EXPECT_EQ(a.SplitPoints, b.SplitPoints) << "job " << j;
+    EXPECT_EQ(a.ThinParts, b.ThinParts) << "job " << j;
+  }
+}
+
 TEST(RestrictedVoronoi, DualTellsThePartOfTheInputOfEachCellPart)
 {
   // Two unit squares side by side, touching along x = 1 but not joined (like a CAD model's
