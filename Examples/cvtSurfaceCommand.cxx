@@ -194,6 +194,7 @@ int RunRemesh(const Options& options)
               << Field(remesh, "ValenceCollapses") << " for valence, "
               << Field(remesh, "FittedVertices") << " vertices moved towards tips, "
               << Field(remesh, "BorderCorners") << " added on border corners, "
+              << Field(remesh, "SlidBorderVertices") << " slid along the border, "
               << Field(remesh, "StraddlingVertices") << " moved to straddle the input)\n"
               << "  valence 6                   " << 100.0 * Field(remesh, "Valence6Fraction")
               << " % (off the border " << 100.0 * Field(remesh, "InteriorValence6Fraction")

@@ -1104,6 +1104,7 @@ void FillRemesh(vtkPolyData* output, const cvt::Remesh& remesh, const cvt::Surfa
   cvtvtk::AddFieldValue(fields, "FittedVertices", remesh.FittedVertices);
   cvtvtk::AddFieldValue(fields, "StraddlingVertices", remesh.StraddlingVertices);
   cvtvtk::AddFieldValue(fields, "BorderCorners", remesh.BorderCorners);
+  cvtvtk::AddFieldValue(fields, "SlidBorderVertices", remesh.SlidBorderVertices);
   cvtvtk::AddFieldValue(fields, "ValenceCollapses", remesh.ValenceCollapses);
   AddTopology(fields, "", topology);
   AddTopology(fields, "Input", input);

@@ -37,6 +37,7 @@ struct Remesh
   int StraddlingVertices = 0; // free vertices moved along their normals to straddle the input
   int OpenedHoles = 0;        // triangles taken out where the input has a hole the cells covered
   int BorderCorners = 0;      // vertices added on input border corners the remesh's border cut off
+  int SlidBorderVertices = 0; // border vertices slid along the input's border to widen triangles
 };
 
 /// The input surface as remeshes are shaped and measured against it (BuildRemesh,
@@ -55,7 +56,8 @@ struct CVTNUMERICS_EXPORT RemeshInput
     int Loop = -1;
     int Index = -1; // in Loops[Loop]
     int Triangle = -1;
-    int Corner = -1; // of Triangle
+    int Corner = -1;       // of Triangle
+    int EdgeTriangle = -1; // the triangle of the border edge from it to the loop's next point
   };
 
   const SurfaceMesh& Surface;
@@ -93,7 +95,8 @@ struct CVTNUMERICS_EXPORT RemeshInput
 /// Border edges whose input boundary between their ends lies farther than that from them get an end
 /// moved along the border onto its farthest point (a corner of the input's border) where that cuts
 /// less of it off, else are split there (the edge's free apex moving to widen the two triangles
-/// where need be), while the triangles keep corners of 27 degrees. Edges
+/// where need be), while the triangles keep corners of 27 degrees; border vertices of triangles
+/// with a corner under 30 degrees then slide along the border where that widens them. Edges
 /// between free vertices are then collapsed where that brings the valences round them closer to 6
 /// (two valence-5 vertices with 7s across their edge: a vertex fewer), keeping corners of 30
 /// degrees and the remesh as close to the input, and the valence flips run again. Last,
