@@ -296,9 +296,10 @@ std::vector<char> BorderVertices(const Remesh& remesh)
 }
 
 /// The smallest corner (radians) of vertex v's triangles (`around`: per vertex, its triangles)
-/// with v at `at`, in `smallest`; false if one of them turns by more than 45 degrees.
+/// with v at `at`, in `smallest`; false if one of them turns by more than 45 degrees (the cosine
+/// of its turn under `leastTurnCosine`).
 bool SmallestCornerAround(const Remesh& remesh, const std::vector<std::vector<int>>& around, int v,
-  const double* at, double& smallest)
+  const double* at, double& smallest, double leastTurnCosine = 0.7)
 {
   const auto point = [&remesh](int u) { return &remesh.Points[3 * static_cast<size_t>(u)]; };
   smallest = 10.0;
@@ -313,7 +314,7 @@ bool SmallestCornerAround(const Remesh& remesh, const std::vector<std::vector<in
     double before[3], after[3];
     UnitNormal(point(tri[0]), point(tri[1]), point(tri[2]), before);
     UnitNormal(p[0], p[1], p[2], after);
-    if (Dot(before, after) < 0.7)
+    if (Dot(before, after) < leastTurnCosine)
     {
       return false;
     }
@@ -1545,25 +1546,18 @@ int FollowInputBorder(
           spots.push_back(spotAlong(at.Loop, std::fmod(along + whole, whole)));
         }
       }
-      // By the smallest corner round v once there, widest first.
+      // By the smallest corner round v once there, widest first; spots where a triangle turns
+      // by 60 degrees or more, which moveAlongBorder refuses, are left out.
       std::vector<std::pair<double, size_t>> order;
-      const std::array<double, 3> start{ point(v)[0], point(v)[1], point(v)[2] };
       for (size_t i = 0; i < spots.size(); ++i)
       {
-        if (spots[i].Triangle < 0)
+        double smallest = 0.0;
+        if (spots[i].Triangle >= 0 &&
+          SmallestCornerAround(remesh, around, v, spots[i].Point.data(), smallest, 0.5))
         {
-          continue;
+          order.emplace_back(smallest, i);
         }
-        std::copy(spots[i].Point.begin(), spots[i].Point.end(), point(v));
-        double smallest = 10.0;
-        for (int u : around[static_cast<size_t>(v)])
-        {
-          const std::array<int, 3>& c = remesh.Triangles[static_cast<size_t>(u)];
-          smallest = std::min(smallest, SmallestCorner(point(c[0]), point(c[1]), point(c[2])));
-        }
-        order.emplace_back(smallest, i);
       }
-      std::copy(start.begin(), start.end(), point(v));
       std::sort(order.rbegin(), order.rend());
       for (const auto& [smallest, i] : order)
       {

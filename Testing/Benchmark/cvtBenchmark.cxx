@@ -41,6 +41,7 @@
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
 #include "cvtMemory.h"
+#include "cvtOptimizer.h"
 #include "cvtProblems.h"
 #include "cvtQuality.h"
 #include "cvtRestrictedVoronoi.h"
@@ -668,27 +669,22 @@ bool DualTiming(const std::string& path, int siteCount)
   {
     return false;
   }
-  std::vector<double> sites = cvt::SampleMeshSites(mesh, siteCount, 1);
   cvt::RestrictedVoronoi engine;
+  cvt::RestrictedProblem problem(engine);
+  cvt::OptimizerOptions lloyd;
+  lloyd.MaximumNumberOfIterations = 5; // cells of the sizes the remesh sees
+  cvt::OptimizerResult settled;
+  std::string error;
   cvt::CellSums sums;
-  for (int step = 0; step < 5; ++step) // Lloyd: cells of the sizes the remesh sees
+  if (!engine.SetMesh(mesh) ||
+    !cvt::RunLloyd(problem, cvt::SiteState{ cvt::SampleMeshSites(mesh, siteCount, 1), {} }, lloyd,
+      nullptr, settled, error) ||
+    !engine.SetSites(settled.Sites))
   {
-    if (!engine.SetMesh(mesh) || !engine.SetSites(sites) || !engine.ComputeCellSums(sums))
-    {
-      std::fprintf(stderr, "engine failed: %s\n", engine.GetLastError().c_str());
-      return false;
-    }
-    for (size_t i = 0; i < sums.Mass.size(); ++i)
-    {
-      if (sums.Mass[i] > 0.0) // moments are about the site
-      {
-        sites[3 * i] += sums.MomentX[i] / sums.Mass[i];
-        sites[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
-        sites[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
-      }
-    }
+    std::fprintf(
+      stderr, "engine failed: %s\n", error.empty() ? engine.GetLastError().c_str() : error.c_str());
+    return false;
   }
-  engine.SetSites(sites);
   std::vector<double> dualTimes, sumTimes;
   cvt::RestrictedDual dual;
   for (int k = 0; k < 21; ++k)
