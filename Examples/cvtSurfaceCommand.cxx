@@ -179,8 +179,9 @@ int RunRemesh(const Options& options)
                      : "")
               << (Field(sites, "AddedSitesSettled") > 0 ? ", settled under their cells' sizes" : "")
               << ")\n"
-              << "  sites added far from remesh " << Field(sites, "FarPointSites")
-              << " (where input and remesh lie over 0.9% of the diagonal apart)\n"
+              << "  sites added far from remesh " << Field(sites, "FarPointSites") << " ("
+              << Field(sites, "FarBorderSites")
+              << " on the border; where input and remesh lie over 0.9% of the diagonal apart)\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "

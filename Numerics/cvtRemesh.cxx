@@ -2650,6 +2650,47 @@ RemeshInput::RemeshInput(const SurfaceMesh& surface, const MeshTopology* topolog
   }
 }
 
+bool RemeshInput::OnBorder(const double p[3]) const
+{
+  if (this->OnLoop.empty())
+  {
+    return false;
+  }
+  double q[3], w[3];
+  const int t = this->Projector.Nearest(p, q, w);
+  if (t < 0)
+  {
+    return false;
+  }
+  const std::array<int, 3>& triangle = this->Surface.Triangles[static_cast<size_t>(t)];
+  for (int k = 0; k < 3; ++k)
+  {
+    if (w[k] > 1.0 - 1e-9 && this->OnLoop.count(triangle[k]))
+    {
+      return true; // at a loop point
+    }
+    if (std::abs(w[k]) > 1e-9)
+    {
+      continue;
+    }
+    // On the edge opposite corner k: a border edge if its ends follow each other on a loop.
+    const auto from = this->OnLoop.find(triangle[(k + 1) % 3]);
+    const auto to = this->OnLoop.find(triangle[(k + 2) % 3]);
+    if (from == this->OnLoop.end() || to == this->OnLoop.end() ||
+      from->second.Loop != to->second.Loop)
+    {
+      continue;
+    }
+    const int size = static_cast<int>(this->Loops[static_cast<size_t>(from->second.Loop)].size());
+    if ((from->second.Index + 1) % size == to->second.Index ||
+      (to->second.Index + 1) % size == from->second.Index)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 namespace
 {
 /// BuildRemesh, shaped against `input` if given.
@@ -2937,7 +2978,8 @@ void CompareTriangles(const Remesh& remesh, const Remesh& before, std::vector<in
 } // namespace
 
 RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, double share,
-  size_t maximumPoints, const Remesh* before, const RemeshFidelity* measuredBefore)
+  size_t maximumPoints, size_t maximumBorderPoints, const Remesh* before,
+  const RemeshFidelity* measuredBefore)
 {
   RemeshFidelity fidelity;
   const double diagonal = input.Diagonal;
@@ -3063,9 +3105,11 @@ RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, d
     }
   }
   std::sort(order.begin(), order.end(), std::greater<>());
+  size_t onBorder = 0;
   for (const auto& [d, p] : order)
   {
-    if (fidelity.FarPoints.size() / 3 >= maximumPoints)
+    const size_t offBorder = fidelity.FarOnBorder.size() - onBorder;
+    if (offBorder >= maximumPoints && onBorder >= maximumBorderPoints)
     {
       break;
     }
@@ -3075,9 +3119,12 @@ RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, d
     {
       crowded = Distance2(at, &fidelity.FarPoints[q]) < 4.0 * d * d;
     }
-    if (!crowded)
+    const bool border = !crowded && input.OnBorder(at);
+    if (!crowded && (border ? onBorder < maximumBorderPoints : offBorder < maximumPoints))
     {
       fidelity.FarPoints.insert(fidelity.FarPoints.end(), at, at + 3);
+      fidelity.FarOnBorder.push_back(border);
+      onBorder += border;
     }
   }
   return fidelity;

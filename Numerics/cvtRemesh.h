@@ -68,6 +68,9 @@ struct CVTNUMERICS_EXPORT RemeshInput
   std::vector<std::vector<int>> Loops;          // its boundary loops (MeshTopology::Loops)
   std::vector<std::vector<double>> LoopLengths; // of each loop (cvt::LoopLengths)
   std::unordered_map<int, LoopPoint> OnLoop;    // per point of a loop
+  /// Whether the surface's nearest point to p lies on its border (a loop point, or a border
+  /// edge between two).
+  bool OnBorder(const double p[3]) const;
   /// BuildRemesh may collapse edges to bring valences closer to 6 (the remesh then has fewer
   /// vertices than the dual); false keeps a vertex per dual vertex.
   bool CollapseForValence = true;
@@ -137,6 +140,7 @@ struct RemeshFidelity
   double InputToRemesh = 0.0;    // the farthest input point from the remesh, share of the diagonal
   double RemeshToInput = 0.0;    // the farthest remesh point from the input, likewise
   std::vector<double> FarPoints; // input points where either is beyond the share asked for
+  std::vector<char> FarOnBorder; // per far point: whether it lies on the input's border
   /// Per probe of the input (RemeshInput::Probes): its distance to the remesh and a nearest
   /// remesh triangle, for measuring a remesh that differs from this one in places.
   std::vector<double> ProbeDistances;
@@ -151,14 +155,15 @@ struct RemeshFidelity
 /// farther than `share` of the diagonal apart: the input points that far from the remesh (tips
 /// and creases its triangles cut off) and the input points nearest to remesh points that far
 /// from the input (triangles bridging a fold), farthest first, none within twice its distance of
-/// one before it, at most `maximumPoints` of them. Given a remesh `before` that this one differs
-/// from in places (as one with sites added differs from the remesh without) and its fidelity
-/// `measuredBefore`, an input probe whose nearest triangle there is also here (the same corners in
-/// the same order) is measured against the triangles that are new here alone, and a remesh point
-/// that was measured there (the same to the bit) is not measured again: the same distances from
-/// far fewer queries.
+/// one before it, at most `maximumPoints` of them off the input's border and
+/// `maximumBorderPoints` on it (the rim of a hole a border edge cuts across). Given a remesh
+/// `before` that this one differs from in places (as one with sites added differs from the remesh
+/// without) and its fidelity `measuredBefore`, an input probe whose nearest triangle there is also
+/// here (the same corners in the same order) is measured against the triangles that are new here
+/// alone, and a remesh point that was measured there (the same to the bit) is not measured again:
+/// the same distances from far fewer queries.
 CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input,
-  double share, size_t maximumPoints, const Remesh* before = nullptr,
+  double share, size_t maximumPoints, size_t maximumBorderPoints, const Remesh* before = nullptr,
   const RemeshFidelity* measuredBefore = nullptr);
 
 /// The topology of BuildRemesh's remesh of `dual` without building it whole: its triangles and

@@ -1646,7 +1646,7 @@ TEST(RestrictedVoronoi, FidelityFindsTheInputPointsTheRemeshCutsOff)
   const cvt::Remesh flat = cvt::BuildRemesh(dual, 1);
   const double diagonal = cvt::BoundingBoxDiagonal(spike);
   const cvt::RemeshInput input(spike);
-  const cvt::RemeshFidelity f = cvt::MeasureFidelity(flat, input, 0.009, 10);
+  const cvt::RemeshFidelity f = cvt::MeasureFidelity(flat, input, 0.009, 10, 10);
   const double inputToRemesh =
     FarthestPoint(spike.Points, spike.Triangles, flat.Points, flat.Triangles, 40) / diagonal;
   const double remeshToInput =
@@ -1664,14 +1664,26 @@ TEST(RestrictedVoronoi, FidelityFindsTheInputPointsTheRemeshCutsOff)
       EXPECT_GT(cvt::Distance2(&f.FarPoints[a], &f.FarPoints[b]), 0.0);
     }
   }
-  EXPECT_EQ(cvt::MeasureFidelity(flat, input, 0.0001, 1).FarPoints.size(), 3u);
+  EXPECT_EQ(cvt::MeasureFidelity(flat, input, 0.0001, 1, 0).FarPoints.size(), 3u);
   const cvt::Remesh fitted = cvt::BuildRemesh(dual, 1, 8, input);
-  const cvt::RemeshFidelity after = cvt::MeasureFidelity(fitted, input, 0.009, 10);
+  const cvt::RemeshFidelity after = cvt::MeasureFidelity(fitted, input, 0.009, 10, 10);
   EXPECT_LT(after.InputToRemesh, 0.009);
   EXPECT_TRUE(after.FarPoints.empty());
   std::cout << "[ measured ] spike cut off: " << f.InputToRemesh << " (brute force "
             << inputToRemesh << ") input to remesh, " << f.RemeshToInput << " (" << remeshToInput
             << ") remesh to input, " << f.FarPoints.size() / 3 << " far points\n";
+}
+
+/// A remesh of the unit square, 0.01 apart, with the vertex at its middle lifted 0.05 into a
+/// narrow spike.
+cvt::Remesh SpikedSquareRemesh()
+{
+  cvt::Remesh spiked;
+  const cvt::SurfaceMesh fine = FlatSquare(100, 0.0, 1.0);
+  spiked.Points = fine.Points;
+  spiked.Triangles = fine.Triangles;
+  spiked.Points[3 * (50 * 101 + 50) + 2] = 0.05;
+  return spiked;
 }
 
 TEST(RestrictedVoronoi, FidelityFindsWhereTheRemeshLiesFarFromTheInput)
@@ -1681,15 +1693,10 @@ TEST(RestrictedVoronoi, FidelityFindsWhereTheRemeshLiesFarFromTheInput)
   // the spike lies 3.5% of the diagonal from the input. The input point under its tip is the
   // first far point.
   const cvt::SurfaceMesh square = FlatSquare(10, 0.0, 1.0);
-  cvt::Remesh spiked;
-  const cvt::SurfaceMesh fine = FlatSquare(100, 0.0, 1.0);
-  spiked.Points = fine.Points;
-  spiked.Triangles = fine.Triangles;
-  const size_t tip = 50 * 101 + 50;
-  spiked.Points[3 * tip + 2] = 0.05;
+  const cvt::Remesh spiked = SpikedSquareRemesh();
   const double diagonal = cvt::BoundingBoxDiagonal(square);
   const cvt::RemeshInput input(square);
-  const cvt::RemeshFidelity f = cvt::MeasureFidelity(spiked, input, 0.009, 10);
+  const cvt::RemeshFidelity f = cvt::MeasureFidelity(spiked, input, 0.009, 10, 10);
   const double inputToRemesh =
     FarthestPoint(square.Points, square.Triangles, spiked.Points, spiked.Triangles, 3) / diagonal;
   EXPECT_LT(inputToRemesh, 0.009);
@@ -1700,6 +1707,46 @@ TEST(RestrictedVoronoi, FidelityFindsWhereTheRemeshLiesFarFromTheInput)
   EXPECT_LT(cvt::Distance2(f.FarPoints.data(), under), 1e-18);
   // Farther than twice their distance apart: the spike's other far points are below 0.009 * 2.
   EXPECT_EQ(f.FarPoints.size(), 3u);
+}
+
+TEST(RestrictedVoronoi, FidelityTellsFarPointsOnTheBorderApart)
+{
+  // The spiked remesh of FidelityFindsWhereTheRemeshLiesFarFromTheInput with its left column
+  // moved 0.05 out, past the input's border: the overhang's far points are the feet of its
+  // points on the border (x = 0), the spike's is the point under its tip, off the border. Each
+  // kind has its own maximum.
+  const cvt::SurfaceMesh square = FlatSquare(10, 0.0, 1.0);
+  cvt::Remesh spiked = SpikedSquareRemesh();
+  for (size_t j = 0; j <= 100; ++j)
+  {
+    spiked.Points[3 * (j * 101)] = -0.05;
+  }
+  const cvt::RemeshInput input(square);
+  const double under[3] = { 0.5, 0.5, 0.0 };
+  const auto count = [](const cvt::RemeshFidelity& f, bool border)
+  { return std::count(f.FarOnBorder.begin(), f.FarOnBorder.end(), border); };
+  const cvt::RemeshFidelity both = cvt::MeasureFidelity(spiked, input, 0.009, 10, 10);
+  ASSERT_EQ(both.FarOnBorder.size(), both.FarPoints.size() / 3);
+  EXPECT_EQ(count(both, false), 1);
+  EXPECT_GE(count(both, true), 5); // 0.1 apart along the side (twice their distance)
+  for (size_t i = 0; i < both.FarOnBorder.size(); ++i)
+  {
+    const double* p = &both.FarPoints[3 * i];
+    if (both.FarOnBorder[i])
+    {
+      EXPECT_NEAR(p[0], 0.0, 1e-12) << "far point " << i;
+    }
+    else
+    {
+      EXPECT_LT(cvt::Distance2(p, under), 1e-18);
+    }
+  }
+  const cvt::RemeshFidelity offOnly = cvt::MeasureFidelity(spiked, input, 0.009, 10, 0);
+  EXPECT_EQ(offOnly.FarPoints.size(), 3u);
+  EXPECT_EQ(count(offOnly, true), 0);
+  const cvt::RemeshFidelity borderOnly = cvt::MeasureFidelity(spiked, input, 0.009, 0, 3);
+  EXPECT_EQ(borderOnly.FarPoints.size(), 9u);
+  EXPECT_EQ(count(borderOnly, true), 3);
 }
 
 TEST(RestrictedVoronoi, FidelityMeasuredAgainstTheRemeshBeforeIsTheSame)
@@ -1722,9 +1769,10 @@ TEST(RestrictedVoronoi, FidelityMeasuredAgainstTheRemeshBeforeIsTheSame)
   cvt::Remesh dented = above;
   const size_t bottom = 50 * 101 + 50;
   dented.Points[3 * bottom + 2] = 0.0;
-  const cvt::RemeshFidelity before = cvt::MeasureFidelity(above, input, 0.009, 10);
-  const cvt::RemeshFidelity scratch = cvt::MeasureFidelity(dented, input, 0.009, 10);
-  const cvt::RemeshFidelity again = cvt::MeasureFidelity(dented, input, 0.009, 10, &above, &before);
+  const cvt::RemeshFidelity before = cvt::MeasureFidelity(above, input, 0.009, 10, 10);
+  const cvt::RemeshFidelity scratch = cvt::MeasureFidelity(dented, input, 0.009, 10, 10);
+  const cvt::RemeshFidelity again =
+    cvt::MeasureFidelity(dented, input, 0.009, 10, 10, &above, &before);
   ASSERT_EQ(again.ProbeDistances.size(), scratch.ProbeDistances.size());
   int nearerNow = 0;
   for (size_t p = 0; p < scratch.ProbeDistances.size(); ++p)
