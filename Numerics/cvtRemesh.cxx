@@ -1078,61 +1078,13 @@ int FollowInputBorder(
   }
   const std::unordered_map<int, RemeshInput::LoopPoint>& onLoop = input.OnLoop;
   const std::vector<std::vector<double>>& lengths = input.LoopLengths;
-  // A remesh vertex's place along a loop, from its input triangle and weights: on a border edge
-  // of that triangle (a weight 0) whose points follow each other on a loop.
-  struct Place
-  {
-    int Loop = -1;
-    double Along = 0.0;
-  };
+  // A remesh vertex's place along a loop, from its input triangle and weights.
+  using Place = RemeshInput::BorderPlace;
   const auto placeOf = [&](int v)
   {
-    Place place;
     const int t = remesh.SourceTriangles[static_cast<size_t>(v)];
-    if (t < 0)
-    {
-      return place;
-    }
-    const std::array<int, 3>& tri = surface.Triangles[static_cast<size_t>(t)];
-    const double* w = &remesh.SourceBarycentric[3 * static_cast<size_t>(v)];
-    for (int k = 0; k < 3; ++k)
-    {
-      const auto at = onLoop.find(tri[k]);
-      if (w[k] > 1.0 - 1e-9 && at != onLoop.end()) // on a loop point
-      {
-        place.Loop = at->second.Loop;
-        place.Along = lengths[static_cast<size_t>(place.Loop)][at->second.Index];
-        return place;
-      }
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      const auto from = onLoop.find(tri[k]);
-      const auto to = onLoop.find(tri[(k + 1) % 3]);
-      if (std::abs(w[(k + 2) % 3]) > 1e-9 || from == onLoop.end() || to == onLoop.end() ||
-        from->second.Loop != to->second.Loop)
-      {
-        continue;
-      }
-      const int loop = from->second.Loop;
-      const int size = static_cast<int>(input.Loops[static_cast<size_t>(loop)].size());
-      const double share = w[(k + 1) % 3];
-      const std::vector<double>& length = lengths[static_cast<size_t>(loop)];
-      const int i = from->second.Index, j = to->second.Index;
-      if ((i + 1) % size == j)
-      {
-        place.Loop = loop;
-        place.Along = length[i] + share * (length[i + 1] - length[i]);
-        return place;
-      }
-      if ((j + 1) % size == i)
-      {
-        place.Loop = loop;
-        place.Along = length[j] + (1.0 - share) * (length[j + 1] - length[j]);
-        return place;
-      }
-    }
-    return place;
+    return t < 0 ? Place()
+                 : input.PlaceOnBorder(t, &remesh.SourceBarycentric[3 * static_cast<size_t>(v)]);
   };
   std::vector<Place> places(remesh.SiteIds.size());
   const std::vector<char> onBorder = BorderVertices(remesh);
@@ -2650,6 +2602,50 @@ RemeshInput::RemeshInput(const SurfaceMesh& surface, const MeshTopology* topolog
   }
 }
 
+RemeshInput::BorderPlace RemeshInput::PlaceOnBorder(int triangle, const double w[3]) const
+{
+  BorderPlace place;
+  const std::array<int, 3>& tri = this->Surface.Triangles[static_cast<size_t>(triangle)];
+  for (int k = 0; k < 3; ++k)
+  {
+    const auto at = this->OnLoop.find(tri[k]);
+    if (w[k] > 1.0 - 1e-9 && at != this->OnLoop.end()) // on a loop point
+    {
+      place.Loop = at->second.Loop;
+      place.Along = this->LoopLengths[static_cast<size_t>(place.Loop)][at->second.Index];
+      return place;
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const auto from = this->OnLoop.find(tri[k]);
+    const auto to = this->OnLoop.find(tri[(k + 1) % 3]);
+    if (std::abs(w[(k + 2) % 3]) > 1e-9 || from == this->OnLoop.end() || to == this->OnLoop.end() ||
+      from->second.Loop != to->second.Loop)
+    {
+      continue;
+    }
+    const int loop = from->second.Loop;
+    const int size = static_cast<int>(this->Loops[static_cast<size_t>(loop)].size());
+    const double share = w[(k + 1) % 3];
+    const std::vector<double>& length = this->LoopLengths[static_cast<size_t>(loop)];
+    const int i = from->second.Index, j = to->second.Index;
+    if ((i + 1) % size == j)
+    {
+      place.Loop = loop;
+      place.Along = length[i] + share * (length[i + 1] - length[i]);
+      return place;
+    }
+    if ((j + 1) % size == i)
+    {
+      place.Loop = loop;
+      place.Along = length[j] + (1.0 - share) * (length[j + 1] - length[j]);
+      return place;
+    }
+  }
+  return place;
+}
+
 bool RemeshInput::OnBorder(const double p[3]) const
 {
   if (this->OnLoop.empty())
@@ -2658,37 +2654,7 @@ bool RemeshInput::OnBorder(const double p[3]) const
   }
   double q[3], w[3];
   const int t = this->Projector.Nearest(p, q, w);
-  if (t < 0)
-  {
-    return false;
-  }
-  const std::array<int, 3>& triangle = this->Surface.Triangles[static_cast<size_t>(t)];
-  for (int k = 0; k < 3; ++k)
-  {
-    if (w[k] > 1.0 - 1e-9 && this->OnLoop.count(triangle[k]))
-    {
-      return true; // at a loop point
-    }
-    if (std::abs(w[k]) > 1e-9)
-    {
-      continue;
-    }
-    // On the edge opposite corner k: a border edge if its ends follow each other on a loop.
-    const auto from = this->OnLoop.find(triangle[(k + 1) % 3]);
-    const auto to = this->OnLoop.find(triangle[(k + 2) % 3]);
-    if (from == this->OnLoop.end() || to == this->OnLoop.end() ||
-      from->second.Loop != to->second.Loop)
-    {
-      continue;
-    }
-    const int size = static_cast<int>(this->Loops[static_cast<size_t>(from->second.Loop)].size());
-    if ((from->second.Index + 1) % size == to->second.Index ||
-      (to->second.Index + 1) % size == from->second.Index)
-    {
-      return true;
-    }
-  }
-  return false;
+  return t >= 0 && this->PlaceOnBorder(t, w).Loop >= 0;
 }
 
 namespace

@@ -68,8 +68,16 @@ struct CVTNUMERICS_EXPORT RemeshInput
   std::vector<std::vector<int>> Loops;          // its boundary loops (MeshTopology::Loops)
   std::vector<std::vector<double>> LoopLengths; // of each loop (cvt::LoopLengths)
   std::unordered_map<int, LoopPoint> OnLoop;    // per point of a loop
-  /// Whether the surface's nearest point to p lies on its border (a loop point, or a border
-  /// edge between two).
+  /// A place on a boundary loop: the loop (-1: none) and the length along it from its first point.
+  struct BorderPlace
+  {
+    int Loop = -1;
+    double Along = 0.0;
+  };
+  /// Where the point at barycentric weights `w` of `triangle` lies on the border: at a loop point,
+  /// or on the border edge between two that follow each other on a loop; else no loop.
+  BorderPlace PlaceOnBorder(int triangle, const double w[3]) const;
+  /// Whether the surface's nearest point to p lies on its border (PlaceOnBorder).
   bool OnBorder(const double p[3]) const;
   /// BuildRemesh may collapse edges to bring valences closer to 6 (the remesh then has fewer
   /// vertices than the dual); false keeps a vertex per dual vertex.
