@@ -172,8 +172,9 @@ int RunRemesh(const Options& options)
               << "  input topology              " << TopologyText(sites, "Input") << "\n"
               << "  remesh topology             " << TopologyText(remesh, "") << "\n"
               << "  sites added for topology    "
-              << Field(sites, "AddedSites") - Field(sites, "FarPointSites") << " (in "
-              << Field(sites, "TopologyRounds") << " rounds"
+              << Field(sites, "AddedSites") - Field(sites, "FarPointSites") -
+        Field(sites, "AngleSites")
+              << " (in " << Field(sites, "TopologyRounds") << " rounds"
               << (Field(sites, "TopologyCeilingReached") > 0
                      ? ", stopped at the ceiling of added sites"
                      : "")
@@ -182,6 +183,8 @@ int RunRemesh(const Options& options)
               << "  sites added far from remesh " << Field(sites, "FarPointSites") << " ("
               << Field(sites, "FarBorderSites")
               << " on the border; where input and remesh lie over 0.9% of the diagonal apart)\n"
+              << "  sites added for angles      " << Field(sites, "AngleSites")
+              << " (at triangles by the border with a corner under 25 degrees)\n"
               << "  remesh: " << remesh->GetNumberOfPoints() << " vertices, "
               << remesh->GetNumberOfPolys() << " triangles (" << Field(remesh, "RemovedTriangles")
               << " dropped as non-manifold, " << Field(remesh, "FilledHoles") << " holes closed, "

@@ -277,24 +277,6 @@ std::vector<std::vector<int>> TrianglesAroundVertices(const Remesh& remesh)
   return around;
 }
 
-/// Per vertex of `remesh`: whether it ends an edge with one triangle (the remesh's border).
-std::vector<char> BorderVertices(const Remesh& remesh)
-{
-  std::vector<char> onBorder(remesh.SiteIds.size(), 0);
-  const EdgeTable edges(remesh.Triangles);
-  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
-  {
-    if (edges.Edge(e).size() == 1)
-    {
-      const EdgeUse& use = *edges.Edge(e).begin();
-      const std::array<int, 3>& t = remesh.Triangles[static_cast<size_t>(use.Triangle)];
-      onBorder[static_cast<size_t>(t[use.Local])] =
-        onBorder[static_cast<size_t>(t[(use.Local + 1) % 3])] = 1;
-    }
-  }
-  return onBorder;
-}
-
 /// The smallest corner (radians) of vertex v's triangles (`around`: per vertex, its triangles)
 /// with v at `at`, in `smallest`; false if one of them turns by more than 45 degrees (the cosine
 /// of its turn under `leastTurnCosine`).
@@ -2547,6 +2529,23 @@ void SplitPinchedVertices(Remesh& remesh)
   }
 }
 } // namespace
+
+std::vector<char> BorderVertices(const Remesh& remesh)
+{
+  std::vector<char> onBorder(remesh.SiteIds.size(), 0);
+  const EdgeTable edges(remesh.Triangles);
+  for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
+  {
+    if (edges.Edge(e).size() == 1)
+    {
+      const EdgeUse& use = *edges.Edge(e).begin();
+      const std::array<int, 3>& t = remesh.Triangles[static_cast<size_t>(use.Triangle)];
+      onBorder[static_cast<size_t>(t[use.Local])] =
+        onBorder[static_cast<size_t>(t[(use.Local + 1) % 3])] = 1;
+    }
+  }
+  return onBorder;
+}
 
 RemeshInput::RemeshInput(const SurfaceMesh& surface, const MeshTopology* topology)
   : Surface(surface)

@@ -170,6 +170,9 @@ struct RemeshFidelity
 /// here (the same corners in the same order) is measured against the triangles that are new here
 /// alone, and a remesh point that was measured there (the same to the bit) is not measured again:
 /// the same distances from far fewer queries.
+/// Per vertex of `remesh`: whether it ends an edge with one triangle (the remesh's border).
+CVTNUMERICS_EXPORT std::vector<char> BorderVertices(const Remesh& remesh);
+
 CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input,
   double share, size_t maximumPoints, size_t maximumBorderPoints, const Remesh* before = nullptr,
   const RemeshFidelity* measuredBefore = nullptr);

@@ -214,6 +214,18 @@ vtkSmartPointer<vtkPolyData> SphereWithHoles()
   return SphereWithHoles({ { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, 0.93);
 }
 
+/// `count` unit vectors spread evenly over the sphere (a Fibonacci sphere).
+std::vector<std::array<double, 3>> FibonacciDirections(int count)
+{
+  std::vector<std::array<double, 3>> directions;
+  for (int i = 0; i < count; ++i)
+  {
+    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(1 - z * z), phi = 2.39996 * i;
+    directions.push_back({ r * std::cos(phi), r * std::sin(phi), z });
+  }
+  return directions;
+}
+
 /// How far the farthest point of `from` lies from the cells of `to`.
 double FarthestPoint(vtkPolyData* from, vtkPolyData* to)
 {
@@ -569,14 +581,9 @@ TEST(RemeshFilter, FarPointsOnTheBorderHaveSitesOfTheirOwn)
   // middle, far from the input. Sites at the far points on the rims have a budget of their own
   // (with the 1% of the vertices that all far points shared before, 9 sites: remesh to input
   // 1.30% of the diagonal by the filter's measure; now 0.84%).
-  std::vector<std::array<double, 3>> directions;
   const int holes = 20;
-  for (int i = 0; i < holes; ++i) // spread evenly (a Fibonacci sphere)
-  {
-    const double z = 1.0 - (2.0 * i + 1.0) / holes, r = std::sqrt(1 - z * z), phi = 2.39996 * i;
-    directions.push_back({ r * std::cos(phi), r * std::sin(phi), z });
-  }
-  vtkSmartPointer<vtkPolyData> input = SphereWithHoles(directions, std::cos(0.07), 180, 140);
+  vtkSmartPointer<vtkPolyData> input =
+    SphereWithHoles(FibonacciDirections(holes), std::cos(0.07), 180, 140);
   RemeshRun run(input, 1000, 100);
   ASSERT_TRUE(run.Status) << run.Log->Errors;
   ExpectTopology(run.Remesh(), 1, 0, holes);
@@ -592,6 +599,34 @@ TEST(RemeshFilter, FarPointsOnTheBorderHaveSitesOfTheirOwn)
             << Field(sites, "FarBorderSites") << " sites at far points on the border; remesh to "
             << "input " << 100.0 * remeshToInput << "%, input to remesh " << 100.0 * inputToRemesh
             << "% of the diagonal\n";
+}
+
+TEST(RemeshFilter, ThinTrianglesByTheBorderGetSitesOfTheirOwn)
+{
+  // Forty holes 0.1 radians wide on a unit sphere at 1000 sites, some closer to each other than
+  // the cells: the border vertices sit on the rims, half a cell from their sites, and left a
+  // triangle by the border with a corner of 20.4 degrees that no flip, move or collapse widened.
+  // A site at its centroid gives the remesh a vertex there.
+  const int holes = 40;
+  vtkSmartPointer<vtkPolyData> input =
+    SphereWithHoles(FibonacciDirections(holes), std::cos(0.05), 180, 140);
+  RemeshRun run(input, 1000, 100);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 1, 0, holes);
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_GE(Field(sites, "AngleSites"), 1);
+  EXPECT_LE(Field(sites, "AngleSites"), holes); // the budget: one per loop, more than 1%
+  EXPECT_GE(Field(sites, "AddedSites"), Field(sites, "FarPointSites") + Field(sites, "AngleSites"));
+  EXPECT_GE(Field(run.Remesh(), "MinimumAngle"), 25.0);
+  // The sites may not take the remesh farther from the input.
+  EXPECT_LT(Field(run.Remesh(), "InputToRemeshDistance"), 0.01);
+  EXPECT_LT(Field(run.Remesh(), "RemeshToInputDistance"), 0.01);
+  const double inputToRemesh = FarthestInputPoint(input, run.Remesh());
+  EXPECT_LT(inputToRemesh, 0.01);
+  std::cout << "[ measured ] sphere with forty holes at 1000 sites: " << Field(sites, "AngleSites")
+            << " sites at thin triangles by the border; smallest angle "
+            << Field(run.Remesh(), "MinimumAngle") << " degrees; input to remesh "
+            << 100.0 * inputToRemesh << "% of the diagonal\n";
 }
 
 TEST(RemeshFilter, ThinTailIsKeptWithAddedSites)
