@@ -629,6 +629,29 @@ TEST(RemeshFilter, ThinTrianglesByTheBorderGetSitesOfTheirOwn)
             << 100.0 * inputToRemesh << "% of the diagonal\n";
 }
 
+TEST(RemeshFilter, SitesForAnglesThatTakeTheRemeshFarGoThroughFidelityRounds)
+{
+  // Thirty holes 0.12 radians wide at 1000 sites leave a 19.8-degree corner by the border; the
+  // site at that triangle's centroid widens it but takes the remesh from 1.00% to 1.28% of the
+  // diagonal from the input, and is kept only once fidelity rounds of its own bring it back.
+  const int holes = 30;
+  vtkSmartPointer<vtkPolyData> input =
+    SphereWithHoles(FibonacciDirections(holes), std::cos(0.06), 180, 140);
+  RemeshRun run(input, 1000, 100);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 1, 0, holes);
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_GE(Field(sites, "AngleSites"), 1);
+  EXPECT_GE(Field(run.Remesh(), "MinimumAngle"), 25.0);
+  EXPECT_LT(Field(run.Remesh(), "InputToRemeshDistance"), 0.01);
+  EXPECT_LT(Field(run.Remesh(), "RemeshToInputDistance"), 0.01);
+  std::cout << "[ measured ] sphere with thirty holes at 1000 sites: " << Field(sites, "AngleSites")
+            << " sites at thin triangles by the border, " << Field(sites, "FarBorderSites")
+            << " at far points on it; smallest angle " << Field(run.Remesh(), "MinimumAngle")
+            << " degrees; remesh to input " << 100.0 * Field(run.Remesh(), "RemeshToInputDistance")
+            << "% of the diagonal\n";
+}
+
 TEST(RemeshFilter, ThinTailIsKeptWithAddedSites)
 {
   // The tail (circumference 0.5) is thinner than the cells of 80 sites (about 0.45 across):
