@@ -547,7 +547,7 @@ struct FidelityCandidate
   int Mismatch = 0;
   cvt::RemeshFidelity Fidelity;
 
-  double Far() const { return std::max(Fidelity.InputToRemesh, Fidelity.RemeshToInput); }
+  double Far() const { return this->Fidelity.TwoWay(); }
   double Near() const { return std::min(Fidelity.InputToRemesh, Fidelity.RemeshToInput); }
   /// Closer to the input than `other`: its topology no further from the input's, and the
   /// two-way distance (the farther of the two ways) smaller, or the same and the other way so.
@@ -557,6 +557,13 @@ struct FidelityCandidate
       (this->Far() < other.Far() || (this->Far() == other.Far() && this->Near() < other.Near()));
   }
 };
+
+/// The spacing of `sites` (flat x, y, z) spread evenly over `surface`: the side of a square of a
+/// cell's area.
+double SiteSpacing(const cvt::SurfaceMesh& surface, const std::vector<double>& sites)
+{
+  return std::sqrt(cvt::SurfaceArea(surface) / static_cast<double>(sites.size() / 3));
+}
 
 /// The candidate's sites, those from `firstAdded` on settled among their neighbours within
 /// `radius` if asked (SettleFarSites), and their dual (the engine's work, one candidate at a time).
@@ -626,8 +633,7 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
   const size_t budget = static_cast<size_t>(std::ceil(FarInputSitesShare * vertices));
   const size_t borderBudget = static_cast<size_t>(std::ceil(std::max(FarBorderSitesShare * vertices,
     FarBorderSitesPerLoop * static_cast<double>(input.Loops.size()))));
-  const double spacing =
-    std::sqrt(cvt::SurfaceArea(target.Surface) / static_cast<double>(best.Sites.size() / 3));
+  const double spacing = SiteSpacing(target.Surface, best.Sites);
   FidelityCandidate current;
   current.Mismatch = best.Mismatch;
   current.Fidelity = cvt::MeasureFidelity(best.Remesh, target, FarInputShare, budget, borderBudget);
@@ -805,11 +811,9 @@ bool RefineForAngles(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
   const size_t budget = static_cast<size_t>(
     std::ceil(std::max(AngleSitesShare * static_cast<double>(best.Remesh.SiteIds.size()),
       AngleSitesPerLoop * static_cast<double>(input.Loops.size()))));
-  const double spacing =
-    std::sqrt(cvt::SurfaceArea(target.Surface) / static_cast<double>(best.Sites.size() / 3));
+  const double spacing = SiteSpacing(target.Surface, best.Sites);
   // The farthest the remesh may lie from the input once the sites are added.
-  const double reach =
-    std::max(FarInputShare, std::max(best.Fidelity.InputToRemesh, best.Fidelity.RemeshToInput));
+  const double reach = std::max(FarInputShare, best.Fidelity.TwoWay());
   std::vector<double> thin;
   double smallest = SmallestCornerNearBorder(best.Remesh, target, thin);
   for (int round = 0; round < AngleRounds && !thin.empty() && !aborted(); ++round)
@@ -863,7 +867,7 @@ bool RefineForAngles(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
           }
           after = SmallestCornerNearBorder(trial.Remesh, target, thinAfter);
           if (trial.Mismatch > best.Mismatch || after <= smallest ||
-            std::max(trial.Fidelity.InputToRemesh, trial.Fidelity.RemeshToInput) > reach)
+            trial.Fidelity.TwoWay() > reach)
           {
             continue;
           }

@@ -9,6 +9,7 @@
 #include "cvtSurfaceMesh.h"
 #include "cvtSurfaceProjector.h"
 
+#include <algorithm>
 #include <array>
 #include <unordered_map>
 #include <vector>
@@ -156,7 +157,13 @@ struct RemeshFidelity
   /// The remesh's own points it was measured at (CoveringPoints) and their distances to the input.
   std::vector<double> RemeshPoints;
   std::vector<double> RemeshPointDistances;
+
+  /// The two-way distance: the farther of the two ways.
+  double TwoWay() const { return std::max(this->InputToRemesh, this->RemeshToInput); }
 };
+
+/// Per vertex of `remesh`: whether it ends an edge with one triangle (the remesh's border).
+CVTNUMERICS_EXPORT std::vector<char> BorderVertices(const Remesh& remesh);
 
 /// How far `remesh` and `input` lie from each other (each measured at its CoveringPoints 0.8%
 /// of the input's diagonal apart, against the other's triangles near them), and where they lie
@@ -170,9 +177,6 @@ struct RemeshFidelity
 /// here (the same corners in the same order) is measured against the triangles that are new here
 /// alone, and a remesh point that was measured there (the same to the bit) is not measured again:
 /// the same distances from far fewer queries.
-/// Per vertex of `remesh`: whether it ends an edge with one triangle (the remesh's border).
-CVTNUMERICS_EXPORT std::vector<char> BorderVertices(const Remesh& remesh);
-
 CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input,
   double share, size_t maximumPoints, size_t maximumBorderPoints, const Remesh* before = nullptr,
   const RemeshFidelity* measuredBefore = nullptr);
