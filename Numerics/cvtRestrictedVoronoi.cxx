@@ -148,6 +148,11 @@ struct RestrictedVoronoi::Internals
   std::vector<std::vector<std::array<int, 4>>> BlockTriples; // sites i, j, k and the triangle
   std::vector<std::array<int, 3>> Adjacent; // per triangle edge: the triangle across it, or -1
   std::vector<int> TriangleParts;           // per triangle: its connected part of the mesh
+  /// The mesh's boundary loops (points joined by border edges): per point, its loop or -1; per
+  /// loop, its number of border edges and its length.
+  std::vector<int> LoopOfPoint;
+  std::vector<int> LoopEdges;
+  std::vector<double> LoopLength;
   std::vector<ContactList> BlockContacts;
 
   void LabelPoints();
@@ -685,6 +690,46 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(DualWork& work, RestrictedDu
   {
     dual.EulerCharacteristic[part] += static_cast<int>(key & 3u) - 1;
   }
+  // Per part, the mesh's holes it covers: boundary loops whose border edges all lie in it alone,
+  // far smaller than its cell (shorter than half the distance from its site to the nearest
+  // other). No site can keep such a hole (three cells round it would meet in slivers); the
+  // remesh opens it instead (OpenCoveredHoles). A part that is a disk but for them is no thin
+  // part: the rounds of added sites had chased such holes in vain (a scan's missing triangles).
+  std::vector<int> coveredHoles(vertexCount, 0);
+  if (!this->LoopEdges.empty() && this->K > 0)
+  {
+    constexpr int several = -2;
+    std::vector<int> holder(this->LoopEdges.size(), -1), held(this->LoopEdges.size(), 0);
+    std::uint64_t previousEdge = ~std::uint64_t(0);
+    int previousPart = -1;
+    for (const auto& [part, key] : otherEdges)
+    {
+      const std::uint64_t edge = key >> 2; // its two points
+      const int loop = this->LoopOfPoint[static_cast<size_t>(key >> 33)];
+      if (loop < 0 || (part == previousPart && edge == previousEdge))
+      {
+        continue; // an edge of more than two triangles, or one held by two pieces of the part
+      }
+      previousPart = part;
+      previousEdge = edge;
+      holder[loop] = holder[loop] == -1 || holder[loop] == part ? part : several;
+      ++held[loop];
+    }
+    for (size_t loop = 0; loop < holder.size(); ++loop)
+    {
+      const int part = holder[loop];
+      if (part < 0 || held[loop] != this->LoopEdges[loop])
+      {
+        continue;
+      }
+      const size_t site = static_cast<size_t>(dual.Sites[part]);
+      const double spacing = std::sqrt(this->NeighborDistance2[site * this->K]);
+      if (this->LoopLength[loop] < 0.5 * spacing)
+      {
+        ++coveredHoles[part];
+      }
+    }
+  }
   // Parts that are not disks, and parts whose shared border has several pieces (they wrap
   // round a thin part and meet on both sides: their edge has more than two triangles).
   std::vector<char> wrapping(vertexCount, 0);
@@ -697,7 +742,11 @@ void RestrictedVoronoi::Internals::FindNonDiskParts(DualWork& work, RestrictedDu
       wrapping[uses.Key() >> 32] = wrapping[uses.Key() & 0xffffffffu] = 1;
     }
   }
-  const auto notDisk = [&dual](size_t v) { return dual.EulerCharacteristic[v] != 1; };
+  const auto notDisk = [&dual, &coveredHoles](size_t v)
+  {
+    const int euler = dual.EulerCharacteristic[v];
+    return euler != 1 && euler + coveredHoles[v] != 1;
+  };
   // Where sites would cut those parts: centroids of their pieces, 3 (1 - chi) for a part that
   // is not a disk (at least 3: a ring needs three cells round it to make triangles), 2 for
   // the others, each farthest from the part's nearest point and from those already taken.
@@ -1106,6 +1155,43 @@ bool RestrictedVoronoi::SetMesh(const SurfaceMesh& mesh)
         const EdgeUse& first = *uses.begin();
         d.Adjacent[t][e] = first.Triangle != t ? first.Triangle : (uses.begin() + 1)->Triangle;
       }
+    }
+  }
+  // The boundary loops: border edges joined through their points.
+  UnionFind loops(static_cast<size_t>(mesh.NumberOfPoints()));
+  for (int t = 0; t < triangleCount; ++t)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      if (d.OnMeshBoundary[t][e] == 1)
+      {
+        loops.Join(mesh.Triangles[t][e], mesh.Triangles[t][(e + 1) % 3]);
+      }
+    }
+  }
+  d.LoopOfPoint.assign(mesh.NumberOfPoints(), -1);
+  d.LoopEdges.clear();
+  d.LoopLength.clear();
+  std::vector<int> loopOfRoot(mesh.NumberOfPoints(), -1);
+  for (int t = 0; t < triangleCount; ++t)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      if (d.OnMeshBoundary[t][e] != 1)
+      {
+        continue;
+      }
+      const int a = mesh.Triangles[t][e], b = mesh.Triangles[t][(e + 1) % 3];
+      int& loop = loopOfRoot[loops.Find(a)];
+      if (loop < 0)
+      {
+        loop = static_cast<int>(d.LoopEdges.size());
+        d.LoopEdges.push_back(0);
+        d.LoopLength.push_back(0.0);
+      }
+      d.LoopOfPoint[a] = d.LoopOfPoint[b] = loop;
+      ++d.LoopEdges[loop];
+      d.LoopLength[loop] += std::sqrt(Distance2(mesh.Point(a), mesh.Point(b)));
     }
   }
   UnionFind parts(static_cast<size_t>(triangleCount));

@@ -50,7 +50,10 @@ struct RestrictedDual
   std::vector<int> EulerCharacteristic;
   /// Surface points (x, y, z) where added sites would cut the non-disk parts into disks, and
   /// split pairs of parts that meet along several curves (round a thin part: their dual edge
-  /// has more than two triangles).
+  /// has more than two triangles). A part that is a disk but for holes of the mesh far smaller
+  /// than itself (boundary loops it holds whole, shorter than half the distance from its site to
+  /// the nearest other) is not cut: no site could keep such holes, and the remesh opens them
+  /// (OpenCoveredHoles).
   std::vector<double> SplitPoints;
   /// How many parts SplitPoints cuts (parts that are not disks or that wrap round a thin
   /// part): the remesh loses what they cover.

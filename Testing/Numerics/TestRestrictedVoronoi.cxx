@@ -601,6 +601,34 @@ TEST(RestrictedVoronoi, DualFindsCellPartsThatAreNotDisks)
   EXPECT_TRUE(dual.SplitPoints.empty());
 }
 
+TEST(RestrictedVoronoi, CellsRoundHolesFarSmallerThanThemAreNoThinParts)
+{
+  // A unit sphere (octahedron subdivided 5 times: triangles about 0.05 across) without one
+  // triangle, with 30 sites (cells about 0.65 across): the cell round the hole is an annulus
+  // (Euler characteristic 0), but the hole is far smaller than it, the remesh opens it and no
+  // site could keep it: no thin part, no split point. (The rings of a tube's ends hold its
+  // loops whole too, but those are as long as the cells are wide: DualFindsCellPartsThatAreNotDisks
+  // still splits them.)
+  cvt::SurfaceMesh holed = Sphere(5);
+  const std::array<int, 3> hole = holed.Triangles[100];
+  holed.Triangles.erase(holed.Triangles.begin() + 100);
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(holed));
+  ASSERT_TRUE(engine.SetSites(SitesNearSphere(30, 3)));
+  cvt::RestrictedDual dual;
+  ASSERT_TRUE(engine.ComputeDual(dual));
+  const int holder = engine.GetPointLabels()[static_cast<size_t>(hole[0])];
+  int annuli = 0;
+  for (size_t v = 0; v < dual.Sites.size(); ++v)
+  {
+    EXPECT_EQ(dual.EulerCharacteristic[v], dual.Sites[v] == holder ? 0 : 1) << "vertex " << v;
+    annuli += dual.EulerCharacteristic[v] == 0;
+  }
+  EXPECT_EQ(annuli, 1);
+  EXPECT_EQ(dual.ThinParts, 0);
+  EXPECT_TRUE(dual.SplitPoints.empty());
+}
+
 TEST(RestrictedVoronoi, DualOfAnEngineReusedIsThatOfAFreshEngine)
 {
   // The dual keeps its work arrays from one call to the next (per piece and per mesh point): an
