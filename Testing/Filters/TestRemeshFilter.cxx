@@ -674,7 +674,7 @@ TEST(RemeshFilter, ThinTailIsKeptWhereTheInputHasAHoleFarSmallerThanTheCells)
   // As above, with one triangle of the ball (about 0.04 across, a scan's missing triangle) taken
   // out opposite the tail. No dual keeps such a hole; the remesh opens it (OpenCoveredHoles).
   // The rounds judge each dual by its remesh with the hole opened: the first added sites that
-  // keep the tail have the input's topology and are taken (42 sites added, smallest angle 28.3
+  // keep the tail have the input's topology and are taken (40 sites added, smallest angle 28.3
   // degrees). Judged without the hole opened, the rounds went on until added sites ringed the
   // hole and kept it as a loop of their own: 52 added, 25.8 degrees.
   vtkSmartPointer<vtkPolyData> ball = BallWithTail(0.08);
