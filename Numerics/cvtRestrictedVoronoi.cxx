@@ -113,6 +113,19 @@ struct PieceIndex
 };
 }
 
+namespace
+{
+/// Adds a cell's piece of a triangle to its cell's sums.
+void AddPiece(const Piece& piece, CellSums& sums)
+{
+  sums.Mass[piece.Site] += piece.Mass;
+  sums.MomentX[piece.Site] += piece.Moment[0];
+  sums.MomentY[piece.Site] += piece.Moment[1];
+  sums.MomentZ[piece.Site] += piece.Moment[2];
+  sums.Energy[piece.Site] += piece.Energy;
+}
+}
+
 struct RestrictedVoronoi::Internals
 {
   SurfaceMesh Mesh;
@@ -155,7 +168,8 @@ struct RestrictedVoronoi::Internals
   std::vector<double> LoopLength;
   std::vector<ContactList> BlockContacts;
 
-  void LabelPoints();
+  /// Labels the mesh's points (those listed, if given) with their nearest sites.
+  void LabelPoints(const std::vector<int>* points = nullptr);
   /// Clips the triangles of blocks [firstBlock, lastBlock) (all of them for the dual).
   void Sweep(bool dual, int firstBlock, int lastBlock);
   /// Nearest sites of one site beyond the stored ones, nearest first.
@@ -878,7 +892,7 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
 }
 
 //------------------------------------------------------------------------------
-void RestrictedVoronoi::Internals::LabelPoints()
+void RestrictedVoronoi::Internals::LabelPoints(const std::vector<int>* points)
 {
   const int pointCount = this->Mesh.NumberOfPoints();
   const int siteCount = static_cast<int>(this->Sites.size() / 3);
@@ -886,11 +900,13 @@ void RestrictedVoronoi::Internals::LabelPoints()
   {
     this->PointLabels.assign(pointCount, -1);
   }
-  cvt::For(0, pointCount, 1024,
-    [this, siteCount](int begin, int end)
+  const int count = points ? static_cast<int>(points->size()) : pointCount;
+  cvt::For(0, count, 1024,
+    [this, siteCount, points](int begin, int end)
     {
-      for (int p = begin; p < end; ++p)
+      for (int i = begin; i < end; ++i)
       {
+        const int p = points ? (*points)[static_cast<size_t>(i)] : i;
         const double* x = this->Mesh.Point(p);
         const int previous = this->PointLabels[p];
         if (previous >= 0 && previous<siteCount&& this->K> 0)
@@ -1402,16 +1418,91 @@ bool RestrictedVoronoi::ComputeCellSums(CellSums& sums)
   {
     for (const Piece& piece : d.BlockPieces[block])
     {
-      sums.Mass[piece.Site] += piece.Mass;
-      sums.MomentX[piece.Site] += piece.Moment[0];
-      sums.MomentY[piece.Site] += piece.Moment[1];
-      sums.MomentZ[piece.Site] += piece.Moment[2];
-      sums.Energy[piece.Site] += piece.Energy;
+      AddPiece(piece, sums);
     }
   }
   if (!this->SumAcrossParts(sums))
   {
     return this->Fail("the cell sums of the other processes sharing the work did not arrive");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool RestrictedVoronoi::ComputeCellSums(
+  const std::vector<int>& triangles, CellSums& sums, std::vector<char>& reachBeyond)
+{
+  Internals& d = *this->Impl;
+  if (d.Mesh.Triangles.empty() || d.Sites.empty())
+  {
+    return this->Fail("set a mesh and sites before computing cell sums");
+  }
+  const int triangleCount = d.Mesh.NumberOfTriangles();
+  std::vector<char> listed(static_cast<size_t>(triangleCount), 0);
+  std::vector<char> listedPoint(static_cast<size_t>(d.Mesh.NumberOfPoints()), 0);
+  for (int t : triangles)
+  {
+    if (t < 0 || t >= triangleCount)
+    {
+      return this->Fail("a listed triangle is not one of the mesh's");
+    }
+    listed[static_cast<size_t>(t)] = 1;
+    for (int p : d.Mesh.Triangles[static_cast<size_t>(t)])
+    {
+      listedPoint[static_cast<size_t>(p)] = 1;
+    }
+  }
+  std::vector<int> points;
+  for (size_t p = 0; p < listedPoint.size(); ++p)
+  {
+    if (listedPoint[p])
+    {
+      points.push_back(static_cast<int>(p));
+    }
+  }
+  d.LabelPoints(&points);
+  // Fixed chunks of the list, summed in their order: the sums do not depend on the threads. Per
+  // piece, whether its triangle is on the list's edge (next to a triangle not listed).
+  const size_t chunkSize = 256;
+  const size_t chunks = (triangles.size() + chunkSize - 1) / chunkSize;
+  std::vector<std::vector<Piece>> chunkPieces(chunks);
+  std::vector<std::vector<char>> chunkOnEdge(chunks);
+  cvt::For(0, static_cast<vtkIdType>(chunks), 1,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      Internals::Scratch scratch;
+      std::vector<std::array<int, 4>> triples; // of the dual: none here
+      ContactList contacts;
+      for (vtkIdType chunk = first; chunk < last; ++chunk)
+      {
+        const size_t begin = static_cast<size_t>(chunk) * chunkSize;
+        const size_t end = std::min(triangles.size(), begin + chunkSize);
+        std::vector<Piece>& pieces = chunkPieces[static_cast<size_t>(chunk)];
+        std::vector<char>& onEdge = chunkOnEdge[static_cast<size_t>(chunk)];
+        for (size_t i = begin; i < end; ++i)
+        {
+          const int t = triangles[i];
+          d.ProcessTriangle(t, false, pieces, triples, contacts, scratch);
+          const std::array<int, 3>& across = d.Adjacent[static_cast<size_t>(t)];
+          onEdge.resize(pieces.size(),
+            std::any_of(across.begin(), across.end(),
+              [&listed](int u) { return u >= 0 && !listed[static_cast<size_t>(u)]; }));
+        }
+      }
+    });
+  sums.Resize(d.Sites.size() / 3, true);
+  reachBeyond.assign(d.Sites.size() / 3, 0);
+  for (size_t chunk = 0; chunk < chunks; ++chunk)
+  {
+    for (size_t i = 0; i < chunkPieces[chunk].size(); ++i)
+    {
+      const Piece& piece = chunkPieces[chunk][i];
+      if (chunkOnEdge[chunk][i])
+      {
+        reachBeyond[static_cast<size_t>(piece.Site)] = 1;
+      }
+      AddPiece(piece, sums);
+    }
   }
   return true;
 }

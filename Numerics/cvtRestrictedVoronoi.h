@@ -83,6 +83,14 @@ public:
   /// Mass, moments about the site (x, y, z) and energy of every restricted cell, with the
   /// mesh's density interpolated linearly over each triangle (exact integrals).
   bool ComputeCellSums(CellSums& sums);
+  /// The same sums over the listed triangles alone (the rest of the mesh is not clipped): exact
+  /// for the cells that lie within them whole, partial for those they cut short. For Lloyd steps
+  /// of a few sites among others that stay, at a fraction of the cost of the whole mesh. In
+  /// `reachBeyond`, per site: whether its cell reaches a listed triangle next to one not listed
+  /// (it may go on beyond the list). The point labels are then those of the listed triangles'
+  /// points alone.
+  bool ComputeCellSums(
+    const std::vector<int>& triangles, CellSums& sums, std::vector<char>& reachBeyond);
   /// The restricted Delaunay triangles and surface points of the current sites.
   bool ComputeDual(RestrictedDual& dual);
   /// The nearest site of every mesh point, from the last ComputeCellSums or ComputeDual.

@@ -4,6 +4,7 @@
 #include "cvtGeometry.h"
 #include "cvtPointCloud.h"
 #include "cvtSampling.h"
+#include "cvtThreads.h"
 #include "cvtUnionFind.h"
 
 #include <algorithm>
@@ -1017,6 +1018,83 @@ double SurfaceArea(const SurfaceMesh& mesh)
     area += TriangleArea(mesh, t);
   }
   return area;
+}
+
+namespace
+{
+/// The indices i in [0, count) for which near(i, tree) holds, in increasing order; `tree` holds
+/// `centres`.
+template<class Near>
+std::vector<int> Select(int count, const std::vector<double>& centres, const Near& near)
+{
+  std::vector<int> selected;
+  if (centres.empty())
+  {
+    return selected;
+  }
+  PointCloud<3> cloud;
+  cloud.Points = &centres;
+  const PointTree<3> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  std::vector<char> flagged(static_cast<size_t>(count), 0);
+  cvt::For(0, count, 1024,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        flagged[static_cast<size_t>(i)] = near(static_cast<int>(i), tree);
+      }
+    });
+  for (int i = 0; i < count; ++i)
+  {
+    if (flagged[static_cast<size_t>(i)])
+    {
+      selected.push_back(i);
+    }
+  }
+  return selected;
+}
+
+/// The squared distance from `x` to the nearest point in `tree`.
+double NearestDistance2(const PointTree<3>& tree, const double* x)
+{
+  std::uint32_t id = 0;
+  double d2 = 0.0;
+  tree.knnSearch(x, 1, &id, &d2);
+  return d2;
+}
+}
+
+std::vector<int> TrianglesNear(
+  const SurfaceMesh& mesh, const std::vector<double>& points, double distance)
+{
+  return Select(mesh.NumberOfTriangles(), points,
+    [&](int t, const PointTree<3>& tree)
+    {
+      const std::array<int, 3>& c = mesh.Triangles[static_cast<size_t>(t)];
+      double centroid[3] = { 0.0, 0.0, 0.0 };
+      for (int p : c)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          centroid[k] += mesh.Point(p)[k] / 3.0;
+        }
+      }
+      double radius2 = 0.0;
+      for (int p : c)
+      {
+        radius2 = std::max(radius2, Distance2(centroid, mesh.Point(p)));
+      }
+      const double reach = distance + std::sqrt(radius2);
+      return NearestDistance2(tree, centroid) <= reach * reach;
+    });
+}
+
+std::vector<int> PointsNear(
+  const std::vector<double>& points, const std::vector<double>& centres, double distance)
+{
+  return Select(static_cast<int>(points.size() / 3), centres,
+    [&](int p, const PointTree<3>& tree)
+    { return NearestDistance2(tree, &points[3 * static_cast<size_t>(p)]) < distance * distance; });
 }
 
 std::vector<double> CoveringPoints(const SurfaceMesh& mesh, double spacing)

@@ -123,6 +123,16 @@ CVTNUMERICS_EXPORT double TriangleArea(const SurfaceMesh& mesh, const std::array
 /// triangles wider than them.
 CVTNUMERICS_EXPORT std::vector<double> CoveringPoints(const SurfaceMesh& mesh, double spacing);
 
+/// The triangles of `mesh` that come within `distance` of one of `points` (flat x, y, z; by
+/// their bounding spheres about their centroids: a few more at most), in increasing order.
+CVTNUMERICS_EXPORT std::vector<int> TrianglesNear(
+  const SurfaceMesh& mesh, const std::vector<double>& points, double distance);
+
+/// The indices of `points` (flat x, y, z) closer than `distance` to one of `centres` (likewise),
+/// in increasing order.
+CVTNUMERICS_EXPORT std::vector<int> PointsNear(
+  const std::vector<double>& points, const std::vector<double>& centres, double distance);
+
 /// The fewest sites a component of genus `genus` needs for a remesh with its topology: 4 for
 /// genus 0 (a tetrahedron; three cells on a small ball meet at its two poles only, and their two
 /// triangles cover each other), 8 + 16 g for genus g.

@@ -431,6 +431,83 @@ TEST(RestrictedVoronoi, MovedSitesGiveTheSumsOfAFreshEngine)
   }
 }
 
+TEST(RestrictedVoronoi, SumsOverListedTrianglesAreThoseOfTheCellsWithinThem)
+{
+  // The triangles within 2.5 spacings of a site: its cell and its neighbours' lie within them
+  // whole, and their sums are those of the whole mesh, to the bit (each cell's pieces are added in
+  // triangle order either way); cells the list cuts short reach its edge, and are told.
+  const cvt::SurfaceMesh mesh = Sphere(4);
+  const std::vector<double> sites = SitesNearSphere(300, 5);
+  const double spacing = std::sqrt(cvt::SurfaceArea(mesh) / 300.0);
+  cvt::RestrictedVoronoi engine;
+  cvt::CellSums whole, listed;
+  std::vector<char> reachBeyond;
+  ASSERT_TRUE(engine.SetMesh(mesh) && engine.SetSites(sites) && engine.ComputeCellSums(whole));
+  const int centre = 17;
+  const std::vector<double> at(&sites[3 * centre], &sites[3 * centre] + 3);
+  const std::vector<int> near = cvt::TrianglesNear(mesh, at, 2.5 * spacing);
+  ASSERT_GT(near.size(), 0u);
+  ASSERT_LT(near.size(), mesh.Triangles.size() / 4);
+  // Every triangle with a corner within the distance is listed; the sites near, by brute force.
+  for (size_t t = 0; t < mesh.Triangles.size(); ++t)
+  {
+    for (int p : mesh.Triangles[t])
+    {
+      if (cvt::Distance2(mesh.Point(p), at.data()) < 6.25 * spacing * spacing)
+      {
+        EXPECT_TRUE(std::binary_search(near.begin(), near.end(), static_cast<int>(t))) << t;
+      }
+    }
+  }
+  const std::vector<int> sitesNear = cvt::PointsNear(sites, at, spacing);
+  std::vector<int> bruteForce;
+  for (size_t i = 0; i < sites.size() / 3; ++i)
+  {
+    if (cvt::Distance2(&sites[3 * i], at.data()) < spacing * spacing)
+    {
+      bruteForce.push_back(static_cast<int>(i));
+    }
+  }
+  EXPECT_EQ(sitesNear, bruteForce);
+  ASSERT_TRUE(engine.ComputeCellSums(near, listed, reachBeyond));
+  ASSERT_EQ(reachBeyond.size(), sites.size() / 3);
+  int cutShort = 0, within = 0;
+  for (size_t i = 0; i < sites.size() / 3; ++i)
+  {
+    const double distance = std::sqrt(cvt::Distance2(&sites[3 * i], at.data()));
+    if (distance < spacing)
+    {
+      EXPECT_FALSE(reachBeyond[i]) << "site " << i;
+      EXPECT_EQ(listed.Mass[i], whole.Mass[i]) << "site " << i;
+      EXPECT_EQ(listed.MomentX[i], whole.MomentX[i]) << "site " << i;
+      EXPECT_EQ(listed.Energy[i], whole.Energy[i]) << "site " << i;
+      ++within;
+    }
+    if (reachBeyond[i])
+    {
+      ++cutShort;
+      EXPECT_GT(distance, spacing) << "site " << i;
+    }
+    else if (listed.Mass[i] > 0.0)
+    {
+      EXPECT_EQ(listed.Mass[i], whole.Mass[i]) << "site " << i; // not cut short: whole
+    }
+    EXPECT_LE(listed.Mass[i], whole.Mass[i] * (1.0 + 1e-12)) << "site " << i;
+  }
+  EXPECT_GE(within, 3);
+  EXPECT_GT(cutShort, 0);
+  // The whole mesh listed gives the whole sums; a triangle that is not the mesh's, an error.
+  std::vector<int> all(mesh.Triangles.size());
+  std::iota(all.begin(), all.end(), 0);
+  ASSERT_TRUE(engine.ComputeCellSums(all, listed, reachBeyond));
+  EXPECT_EQ(listed.Mass, whole.Mass);
+  EXPECT_EQ(listed.Energy, whole.Energy);
+  EXPECT_EQ(std::count(reachBeyond.begin(), reachBeyond.end(), 1), 0);
+  EXPECT_FALSE(
+    engine.ComputeCellSums({ static_cast<int>(mesh.Triangles.size()) }, listed, reachBeyond));
+  EXPECT_NE(engine.GetLastError().find("not one of the mesh's"), std::string::npos);
+}
+
 TEST(RestrictedVoronoi, SharedWorkAddsUpToTheSumsOfOneProcess)
 {
   // Two engines play two MPI ranks: each clips half of the blocks of triangles; part 1 hands
