@@ -70,6 +70,8 @@ constexpr int TopologyAddedSitesCeilingPerBound = 4;
 /// Lloyd iterations that settle the added sites under their cells' sizes: 15, 20 and 30 give
 /// about the same valences on the CGAL meshes; at 1000 sites 20 cost 0.06 to 0.18 s.
 constexpr int SettledIterations = 20;
+/// The sites within this many site spacings of the added ones are settled with them.
+constexpr double SettledNeighbourhood = 2.0;
 /// Where the remesh and the input lie farther apart than this share of the bounding-box diagonal,
 /// sites are added (RefineForFidelity): they should lie within 1% of each other both ways.
 constexpr double FarInputShare = 0.009;
@@ -101,6 +103,11 @@ constexpr int AngleRounds = 3;
 /// neighbours and a vertex near the point (RefineForFidelity).
 constexpr int FarSiteSettlingIterations = 3;
 constexpr double FarSiteNeighbourhood = 2.0;
+/// Lloyd iterations of a few sites among others that stay clip only the triangles within this
+/// many site spacings of the moving sites (SettleSitesLocally): a cell reaches about 0.6 of one
+/// from its site, and a site moves less than one in a few iterations. A moving cell that still
+/// reaches the edge of them has the whole mesh clipped.
+constexpr double LocalSettlingReach = 2.5;
 
 /// How far a remesh's topology is from the input's: 0 when the same.
 int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
@@ -327,6 +334,56 @@ cvt::MeshTopology ExpectedTopology(
   return cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
 }
 
+/// The spacing of `sites` (flat x, y, z) spread evenly over `surface`: the side of a square of a
+/// cell's area.
+double SiteSpacing(const cvt::SurfaceMesh& surface, const std::vector<double>& sites)
+{
+  return std::sqrt(cvt::SurfaceArea(surface) / static_cast<double>(sites.size() / 3));
+}
+
+/// Moves the sites from `first` on, and those within `radius` of them, to their cells'
+/// centroids, `iterations` times; the other sites stay. Only the triangles within reach of the
+/// moving sites are clipped (LocalSettlingReach site spacings, `spacing` each), unless a moving
+/// cell reaches the edge of them; then the whole mesh.
+bool SettleSitesLocally(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh, size_t first,
+  double radius, double spacing, int iterations, std::vector<double>& sites, std::string& error)
+{
+  const std::vector<double> added(
+    sites.begin() + 3 * static_cast<std::ptrdiff_t>(first), sites.end());
+  const std::vector<int> moving = cvt::PointsNear(sites, added, radius);
+  std::vector<double> movingSites;
+  for (int i : moving)
+  {
+    movingSites.insert(movingSites.end(), &sites[3 * i], &sites[3 * i] + 3);
+  }
+  const std::vector<int> near = cvt::TrianglesNear(mesh, movingSites, LocalSettlingReach * spacing);
+  for (int iteration = 0; iteration < iterations; ++iteration)
+  {
+    cvt::CellSums sums;
+    std::vector<char> reachBeyond;
+    bool summed = engine.SetSites(sites) && engine.ComputeCellSums(near, sums, reachBeyond);
+    if (summed && std::any_of(moving.begin(), moving.end(), [&](int i) { return reachBeyond[i]; }))
+    {
+      summed = engine.ComputeCellSums(sums);
+    }
+    if (!summed)
+    {
+      error = engine.GetLastError();
+      return false;
+    }
+    for (int i : moving)
+    {
+      if (sums.Mass[i] > 0.0) // moments are about the site
+      {
+        sites[3 * i] += sums.MomentX[i] / sums.Mass[i];
+        sites[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
+        sites[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
+      }
+    }
+  }
+  return true;
+}
+
 /// The added sites of a remesh with the input's topology stay where the rounds' few uniform
 /// Lloyd iterations left them: crowded and irregular round the thin parts (valence 6 about 0.5
 /// there against 0.83 elsewhere), since more uniform iterations would spread them out of the
@@ -334,9 +391,12 @@ cvt::MeshTopology ExpectedTopology(
 /// sizes (DensityOfCellSizes) regularise them where they are; the settled sites replace them if
 /// their remesh keeps the input's topology. At 1000 sites valence 6 goes cow 0.742 -> 0.757,
 /// camel 0.741 -> 0.757, bull 0.732 -> 0.746, man 0.687 -> 0.700 (of the 138 CGAL meshes, 19
-/// have sites added and 16 change; triceratops and diplodocus lose up to 0.008).
+/// have sites added and 16 change; triceratops and diplodocus lose up to 0.008). Only the added
+/// sites (from `firstAdded` on) and those within SettledNeighbourhood site spacings of them move
+/// (SettleSitesLocally): the others were settled by the CVT, and their cells were clipped 20 times
+/// for nothing (at 5000 sites 0.38 s of armadillo's 2.6 s end to end, for 4 added sites).
 bool SettleUnderCellSizes(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
-  const cvt::MeshTopology& input, TopologyRefinement& best, std::string& error)
+  const cvt::MeshTopology& input, size_t firstAdded, TopologyRefinement& best, std::string& error)
 {
   cvt::CellSums sums;
   if (!engine.SetSites(best.Sites) || !engine.ComputeCellSums(sums))
@@ -345,15 +405,14 @@ bool SettleUnderCellSizes(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh
     return false;
   }
   // The engine's own mesh under the sizing density for the settling, then under its own again.
-  cvt::RestrictedProblem problem(engine);
-  cvt::OptimizerOptions settle;
-  settle.MaximumNumberOfIterations = SettledIterations;
-  cvt::OptimizerResult settled;
+  std::vector<double> settled = best.Sites;
+  const double spacing = SiteSpacing(mesh, settled);
   cvt::RestrictedDual dual;
   const bool sized =
     engine.SetDensity(cvt::DensityOfCellSizes(mesh, engine.GetPointLabels(), sums.Mass)) &&
-    cvt::RunLloyd(problem, cvt::SiteState{ best.Sites, {} }, settle, nullptr, settled, error);
-  if (!engine.SetDensity(mesh.Density) || !sized || !engine.SetSites(settled.Sites) ||
+    SettleSitesLocally(engine, mesh, firstAdded, SettledNeighbourhood * spacing, spacing,
+      SettledIterations, settled, error);
+  if (!engine.SetDensity(mesh.Density) || !sized || !engine.SetSites(settled) ||
     !engine.ComputeDual(dual))
   {
     error =
@@ -363,7 +422,7 @@ bool SettleUnderCellSizes(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh
   if (TopologyMismatch(ExpectedTopology(dual, mesh, input), input) == 0)
   {
     best.Dual = std::move(dual);
-    best.Sites = std::move(settled.Sites);
+    best.Sites = std::move(settled);
     best.Settled = true;
   }
   return true;
@@ -508,52 +567,13 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
   }
   best.CeilingReached = ceilingReached && best.Mismatch != 0; // not when a later pass got there
   if (best.Mismatch == 0 && best.AddedSites > 0 && !aborted() &&
-    !SettleUnderCellSizes(engine, mesh, input, best, error))
+    !SettleUnderCellSizes(engine, mesh, input, sites.size() / 3, best, error))
   {
     return false;
   }
   // Only the chosen dual is shaped into a remesh (most of the cost of one).
   best.Remesh = ShapedRemesh(best.Dual, target, input, best.Topology);
   best.Mismatch = TopologyMismatch(best.Topology, input);
-  return true;
-}
-
-/// Moves the sites from `first` on, and those within `radius` of them, to their cells'
-/// centroids, FarSiteSettlingIterations times; the other sites stay.
-bool SettleFarSites(cvt::RestrictedVoronoi& engine, size_t first, double radius,
-  std::vector<double>& sites, std::string& error)
-{
-  const size_t count = sites.size() / 3;
-  std::vector<size_t> moving;
-  for (size_t i = 0; i < count; ++i)
-  {
-    for (size_t added = first; added < count; ++added)
-    {
-      if (vtkMath::Distance2BetweenPoints(&sites[3 * i], &sites[3 * added]) < radius * radius)
-      {
-        moving.push_back(i);
-        break;
-      }
-    }
-  }
-  for (int iteration = 0; iteration < FarSiteSettlingIterations; ++iteration)
-  {
-    cvt::CellSums sums;
-    if (!engine.SetSites(sites) || !engine.ComputeCellSums(sums))
-    {
-      error = "the settling of the sites at far input points failed: " + engine.GetLastError();
-      return false;
-    }
-    for (size_t i : moving)
-    {
-      if (sums.Mass[i] > 0.0) // moments are about the site
-      {
-        sites[3 * i] += sums.MomentX[i] / sums.Mass[i];
-        sites[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
-        sites[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
-      }
-    }
-  }
   return true;
 }
 
@@ -581,20 +601,17 @@ struct FidelityCandidate
   }
 };
 
-/// The spacing of `sites` (flat x, y, z) spread evenly over `surface`: the side of a square of a
-/// cell's area.
-double SiteSpacing(const cvt::SurfaceMesh& surface, const std::vector<double>& sites)
-{
-  return std::sqrt(cvt::SurfaceArea(surface) / static_cast<double>(sites.size() / 3));
-}
-
 /// The candidate's sites, those from `firstAdded` on settled among their neighbours within
-/// `radius` if asked (SettleFarSites), and their dual (the engine's work, one candidate at a time).
-bool ComputeCandidateDual(cvt::RestrictedVoronoi& engine, size_t firstAdded, double radius,
-  bool settle, FidelityCandidate& candidate, std::string& error)
+/// FarSiteNeighbourhood site spacings (`spacing`) if asked (SettleSitesLocally), and their dual
+/// (the engine's work, one candidate at a time).
+bool ComputeCandidateDual(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh,
+  size_t firstAdded, double spacing, bool settle, FidelityCandidate& candidate, std::string& error)
 {
-  if (settle && !SettleFarSites(engine, firstAdded, radius, candidate.Sites, error))
+  if (settle &&
+    !SettleSitesLocally(engine, mesh, firstAdded, FarSiteNeighbourhood * spacing, spacing,
+      FarSiteSettlingIterations, candidate.Sites, error))
   {
+    error = "the settling of the sites at far input points failed: " + error;
     return false;
   }
   if (!engine.SetSites(candidate.Sites) || !engine.ComputeDual(candidate.Dual))
@@ -619,8 +636,8 @@ void TakeCandidate(FidelityCandidate& candidate, TopologyRefinement& best)
 /// FarInputShare of the diagonal: input points at tips, ears and creases its flat triangles cut
 /// off, and under triangles bridging a fold), so that the remesh gets vertices there: in rounds,
 /// each trying all the far points and, where those gain nothing, the farther half of them, each at
-/// the points and settled among their neighbours (SettleFarSites), and keeping the closest to the
-/// input (CloserThan) of those closer than the remesh before; at most FarInputSitesShare of the
+/// the points and settled among their neighbours (SettleSitesLocally), and keeping the closest to
+/// the input (CloserThan) of those closer than the remesh before; at most FarInputSitesShare of the
 /// vertices in all. The halves: a sphere with four holes at 500 sites, 1.62 -> 1.16%. Trying them
 /// after a gain too, as before, took 19% more remesh time on the 155 meshes at 1000 sites (35.8 ->
 /// 42.7 s; spool 0.53 -> 1.12 s end to end, oblong 0.64 -> 1.18) and changed 4 of them: 3torus 1.17
@@ -679,7 +696,7 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
       }
     }
     return ComputeCandidateDual(
-      engine, best.Sites.size() / 3, FarSiteNeighbourhood * spacing, settle, candidate, error);
+      engine, target.Surface, best.Sites.size() / 3, spacing, settle, candidate, error);
   };
   // Its remesh and how far that lies from the input (the most of a candidate's cost, run for
   // two candidates at once: the shaping of one is serial), measured again only where it differs
@@ -813,8 +830,8 @@ double SmallestCornerNearBorder(
 /// move or collapse widens (each would take a vertex off its rim). A site at such a triangle's
 /// centroid gives the remesh a vertex there. In rounds, each trying the sites at all the thin
 /// triangles' centroids, then at the thinner half and quarter of them, at the points and settled
-/// among their neighbours (SettleFarSites); a candidate is taken when its topology is no further
-/// from the input's, its smallest corner wider, and the two-way distance no larger than
+/// among their neighbours (SettleSitesLocally); a candidate is taken when its topology is no
+/// further from the input's, its smallest corner wider, and the two-way distance no larger than
 /// FarInputShare or than before, if need be after fidelity rounds of its own (RefineForFidelity:
 /// a sphere with a hundred holes 0.08 radians wide at 1000 sites, 18.8 -> 25.1 degrees, with 30
 /// sites at thin triangles; without those rounds the one site at a 19.8-degree triangle of a
@@ -858,8 +875,8 @@ bool RefineForAngles(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
         candidate.Sites = best.Sites;
         candidate.Sites.insert(candidate.Sites.end(), thin.begin(),
           thin.begin() + 3 * static_cast<std::ptrdiff_t>(count));
-        if (!ComputeCandidateDual(engine, best.Sites.size() / 3, FarSiteNeighbourhood * spacing,
-              settle, candidate, error))
+        if (!ComputeCandidateDual(
+              engine, target.Surface, best.Sites.size() / 3, spacing, settle, candidate, error))
         {
           return false;
         }
