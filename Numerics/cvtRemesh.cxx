@@ -1582,20 +1582,6 @@ void MeasureProbes(const Remesh& remesh, const std::vector<double>& probes,
     });
 }
 
-/// The indices whose flags are set.
-std::vector<int> Flagged(const std::vector<char>& flags)
-{
-  std::vector<int> indices;
-  for (size_t i = 0; i < flags.size(); ++i)
-  {
-    if (flags[i])
-    {
-      indices.push_back(static_cast<int>(i));
-    }
-  }
-  return indices;
-}
-
 /// How far the remesh lies from the input, kept up to date as vertices move: per triangle, the
 /// farthest input point nearest to it (ProbeFoot) and the farthest of its corners, edge middles
 /// and centroid from the input; infinite for a triangle turned over against its normal at the

@@ -1452,14 +1452,7 @@ bool RestrictedVoronoi::ComputeCellSums(
       listedPoint[static_cast<size_t>(p)] = 1;
     }
   }
-  std::vector<int> points;
-  for (size_t p = 0; p < listedPoint.size(); ++p)
-  {
-    if (listedPoint[p])
-    {
-      points.push_back(static_cast<int>(p));
-    }
-  }
+  const std::vector<int> points = Flagged(listedPoint);
   d.LabelPoints(&points);
   // Fixed chunks of the list, summed in their order: the sums do not depend on the threads. Per
   // piece, whether its triangle is on the list's edge (next to a triangle not listed).

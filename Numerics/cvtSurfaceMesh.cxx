@@ -1020,6 +1020,19 @@ double SurfaceArea(const SurfaceMesh& mesh)
   return area;
 }
 
+std::vector<int> Flagged(const std::vector<char>& flags)
+{
+  std::vector<int> indices;
+  for (size_t i = 0; i < flags.size(); ++i)
+  {
+    if (flags[i])
+    {
+      indices.push_back(static_cast<int>(i));
+    }
+  }
+  return indices;
+}
+
 namespace
 {
 /// The indices i in [0, count) for which near(i, tree) holds, in increasing order; `tree` holds
@@ -1027,10 +1040,9 @@ namespace
 template<class Near>
 std::vector<int> Select(int count, const std::vector<double>& centres, const Near& near)
 {
-  std::vector<int> selected;
   if (centres.empty())
   {
-    return selected;
+    return {};
   }
   PointCloud<3> cloud;
   cloud.Points = &centres;
@@ -1044,14 +1056,7 @@ std::vector<int> Select(int count, const std::vector<double>& centres, const Nea
         flagged[static_cast<size_t>(i)] = near(static_cast<int>(i), tree);
       }
     });
-  for (int i = 0; i < count; ++i)
-  {
-    if (flagged[static_cast<size_t>(i)])
-    {
-      selected.push_back(i);
-    }
-  }
-  return selected;
+  return Flagged(flagged);
 }
 
 /// The squared distance from `x` to the nearest point in `tree`.

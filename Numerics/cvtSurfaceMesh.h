@@ -128,6 +128,9 @@ CVTNUMERICS_EXPORT std::vector<double> CoveringPoints(const SurfaceMesh& mesh, d
 CVTNUMERICS_EXPORT std::vector<int> TrianglesNear(
   const SurfaceMesh& mesh, const std::vector<double>& points, double distance);
 
+/// The indices whose flags are set, in increasing order.
+CVTNUMERICS_EXPORT std::vector<int> Flagged(const std::vector<char>& flags);
+
 /// The indices of `points` (flat x, y, z) closer than `distance` to one of `centres` (likewise),
 /// in increasing order.
 CVTNUMERICS_EXPORT std::vector<int> PointsNear(
