@@ -52,7 +52,8 @@ Sites:
   --seed S                seed of the initial site sampling (default 1)
 Optimiser:
   --method lloyd|lbfgs    optimiser (default lbfgs)
-  --iterations N          iteration cap (default 100)
+  --iterations N          iteration cap (default 100; a surface --input with more than 2500
+                          sites, unless given: 250000/sites, at least 50)
   --tolerance T           stop when the relative energy decrease falls below T (Lloyd: or
                           when no pixel changes site); 0 runs every iteration (default 1e-6)
   --gradient-tolerance G  stop when |grad F| falls below G times its initial value (default 0)
@@ -228,7 +229,10 @@ Options ParseArguments(const std::vector<std::string>& args)
     else if (a == "--method")
       options.Method = value();
     else if (a == "--iterations")
+    {
       options.Iterations = ParseInt(a, value());
+      options.IterationsGiven = true;
+    }
     else if (a == "--tolerance")
       options.Tolerance = ParseNumber(a, value());
     else if (a == "--output")

@@ -24,6 +24,7 @@ struct Options
   double GradientTolerance = 0.0;
   double Domain[4] = { -1.0, 1.0, -1.0, 1.0 };
   int Resolution = 512, Sites = 1000, Iterations = 100;
+  bool IterationsGiven = false; // --iterations given: a remesh then keeps that cap at any count
   double Torus[2] = { 1.0, 0.4 };
   int GIResolution[2] = { 1024, 512 };
   bool GIResolutionGiven = false; // else a mesh's atlas is sized from --sites

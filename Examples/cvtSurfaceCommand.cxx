@@ -135,6 +135,10 @@ int RunRemesh(const Options& options)
   cvt->SetDensityArray(options.Array.c_str());
   cvt->SetCollapseForValence(!options.KeepEverySite);
   SetOptimizer(options, cvt.Get());
+  if (options.IterationsGiven)
+  {
+    cvt->SetSiteIterationBudget(0); // the cap asked for, whatever the number of sites
+  }
   const Clock::time_point optimise = Clock::now();
   RunOrFail(
     cvt, [](vtkAlgorithm* f) { return static_cast<vtkCVTRemeshFilter*>(f)->GetSitesOutput(); });

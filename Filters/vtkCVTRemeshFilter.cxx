@@ -108,6 +108,24 @@ constexpr double FarSiteNeighbourhood = 2.0;
 /// from its site, and a site moves less than one in a few iterations. A moving cell that still
 /// reaches the edge of them has the whole mesh clipped.
 constexpr double LocalSettlingReach = 2.5;
+/// The fewest iterations SiteIterationBudget leaves the optimisation: at 5000 sites on 80 public
+/// meshes, 50 instead of 100 kept valence 6 at 0.80 or more wherever it was (Geogram's CVT: 0.81
+/// to 0.82); at 1000 sites, where the remesh's valences and distances have less margin, 50
+/// iterations took 3 more of 20 meshes beyond 1% of the diagonal (bull 0.88 -> 1.61%) and
+/// turbine's valence 6 from 0.754 to 0.717.
+constexpr int MinimumBudgetIterations = 50;
+
+/// The iteration cap of an optimisation of `sites` sites: `maximum`, lowered to `budget` /
+/// `sites` but not under MinimumBudgetIterations (a budget of 0: `maximum`).
+int BudgetedIterations(int maximum, size_t sites, int budget)
+{
+  if (budget <= 0 || sites == 0)
+  {
+    return maximum;
+  }
+  const size_t share = static_cast<size_t>(budget) / sites;
+  return std::min(maximum, static_cast<int>(std::max<size_t>(MinimumBudgetIterations, share)));
+}
 
 /// How far a remesh's topology is from the input's: 0 when the same.
 int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
@@ -1461,7 +1479,9 @@ bool vtkCVTRemeshFilter::Compute(
   }
   cvt::RestrictedVoronoi engine;
   cvt::OptimizerOptions options = this->GetOptimizerOptions();
-  options.LloydWarmUpIterations = std::min(5, this->MaximumNumberOfIterations);
+  options.MaximumNumberOfIterations = BudgetedIterations(
+    options.MaximumNumberOfIterations, initial.size() / 3, this->SiteIterationBudget);
+  options.LloydWarmUpIterations = std::min(5, options.MaximumNumberOfIterations);
   cvt::OptimizerResult result;
   const bool meshSet = engine.SetMesh(mesh);
   // Under MPI the ranks share the clipping of the triangles for the cell sums.
@@ -1573,4 +1593,5 @@ void vtkCVTRemeshFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "DensityArray: " << (this->DensityArray.empty() ? "(uniform)" : this->DensityArray) << "\n";
   os << indent << "CollapseForValence: " << (this->CollapseForValence ? "on" : "off") << "\n";
+  os << indent << "SiteIterationBudget: " << this->SiteIterationBudget << "\n";
 }

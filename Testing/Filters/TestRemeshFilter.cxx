@@ -1208,12 +1208,7 @@ TEST(RemeshFilter, SameSeedSameResultAndAbortStops)
   filter->Update();
   EXPECT_LT(calls, 8);
   EXPECT_EQ(filter->GetSitesOutput()->GetNumberOfPoints(), 200);
-  EXPECT_EQ(filter->GetSitesOutput()
-              ->GetFieldData()
-              ->GetAbstractArray("StopReason")
-              ->GetVariantValue(0)
-              .ToString(),
-    "aborted");
+  EXPECT_EQ(cvttest::StopReason(filter), "aborted");
   std::ostringstream text;
   filter->Print(text);
   EXPECT_NE(text.str().find("NumberOfSites: 200"), std::string::npos);
@@ -1238,14 +1233,6 @@ TEST(RemeshFilter, OptionsTakeEffect)
     filter->Update();
     return filter;
   };
-  const auto reason = [](vtkCVTRemeshFilter* f)
-  {
-    return f->GetSitesOutput()
-      ->GetFieldData()
-      ->GetAbstractArray("StopReason")
-      ->GetVariantValue(0)
-      .ToString();
-  };
   const auto energy = [](vtkCVTRemeshFilter* f, vtkIdType row)
   { return f->GetHistoryOutput()->GetValueByName(row, "energy").ToDouble(); };
   auto lbfgs = run(vtkCVTRemeshFilter::LBFGS, 1, 0.0, 0.0, 7, "");
@@ -1264,12 +1251,55 @@ TEST(RemeshFilter, OptionsTakeEffect)
   // The stop rules.
   auto loose = run(vtkCVTRemeshFilter::LBFGS, 1, 1e-2, 0.0, 7, "");
   EXPECT_LT(loose->GetHistoryOutput()->GetNumberOfRows(), 41);
-  EXPECT_EQ(reason(loose), "relative energy decrease below tolerance");
+  EXPECT_EQ(cvttest::StopReason(loose), "relative energy decrease below tolerance");
   auto gradient = run(vtkCVTRemeshFilter::LBFGS, 1, 0.0, 0.3, 7, "");
-  EXPECT_EQ(reason(gradient), "gradient tolerance reached");
+  EXPECT_EQ(cvttest::StopReason(gradient), "gradient tolerance reached");
   // ParaView's "Uniform density" is no array at all.
   auto uniform = run(vtkCVTRemeshFilter::LBFGS, 1, 0.0, 0.0, 7, "Uniform density");
   EXPECT_EQ(energy(uniform, 40), energy(lbfgs, 40));
+}
+
+// With many sites the optimisation spends at most SiteIterationBudget site iterations, but no
+// fewer than 50 iterations; a budget of 0, or one the sites leave room under, keeps the cap.
+TEST(RemeshFilter, SiteIterationBudgetLowersTheIterationCapAtManySites)
+{
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  const auto run = [&sphere](int budget)
+  {
+    auto filter = vtkSmartPointer<vtkCVTRemeshFilter>::New();
+    filter->SetInputData(sphere);
+    filter->SetNumberOfSites(150);
+    filter->SetMaximumNumberOfIterations(100);
+    filter->SetTolerance(0.0);
+    filter->SetSiteIterationBudget(budget);
+    filter->Update();
+    return filter;
+  };
+  const auto iterations = [](vtkCVTRemeshFilter* f)
+  { return Field(f->GetSitesOutput(), "Iterations"); };
+  auto budgeted = run(150 * 70); // 70 iterations
+  EXPECT_EQ(iterations(budgeted), 70);
+  EXPECT_EQ(cvttest::StopReason(budgeted), "iteration limit");
+  EXPECT_EQ(budgeted->GetHistoryOutput()->GetNumberOfRows(), 71);
+  auto floor = run(150 * 10); // 10 asked, 50 kept
+  EXPECT_EQ(iterations(floor), 50);
+  EXPECT_EQ(cvttest::StopReason(floor), "iteration limit");
+  for (int budget : { 0, 150 * 200, 250000 })
+  {
+    auto capped = run(budget);
+    EXPECT_GT(iterations(capped), 70) << budget;
+    EXPECT_LT(
+      Field(capped->GetSitesOutput(), "Energy"), Field(budgeted->GetSitesOutput(), "Energy"))
+      << budget;
+  }
+  // The default, printed; negative budgets are none.
+  vtkNew<vtkCVTRemeshFilter> filter;
+  EXPECT_EQ(filter->GetSiteIterationBudget(), 250000);
+  std::ostringstream printed;
+  filter->Print(printed);
+  EXPECT_NE(printed.str().find("SiteIterationBudget: 250000"), std::string::npos);
+  filter->SetSiteIterationBudget(-5);
+  EXPECT_EQ(filter->GetSiteIterationBudget(), 0);
 }
 
 // The sites of another run (vtkCVTSurfaceFilter's on a geometry image, say) are remeshed as

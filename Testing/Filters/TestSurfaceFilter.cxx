@@ -264,14 +264,6 @@ TEST(SurfaceFilter, SeedToleranceAndCorrectionsTakeEffect)
     cvt->Update();
     return cvt;
   };
-  const auto reason = [](vtkCVTSurfaceFilter* cvt)
-  {
-    return cvt->GetSitesOutput()
-      ->GetFieldData()
-      ->GetAbstractArray("StopReason")
-      ->GetVariantValue(0)
-      .ToString();
-  };
   auto a = run(3, 1e-3, 0.0, 7), b = run(3, 1e-3, 0.0, 7), c = run(4, 1e-3, 0.0, 7);
   double pa[3], pb[3], pc[3];
   a->GetSitesOutput()->GetPoint(0, pa);
@@ -280,9 +272,9 @@ TEST(SurfaceFilter, SeedToleranceAndCorrectionsTakeEffect)
   EXPECT_EQ(pa[0], pb[0]); // the same seed gives the same sites
   EXPECT_NE(pa[0], pc[0]);
   EXPECT_LT(a->GetHistoryOutput()->GetNumberOfRows(), 200);
-  EXPECT_EQ(reason(a), "relative energy decrease below tolerance") << reason(a);
+  EXPECT_EQ(cvttest::StopReason(a), "relative energy decrease below tolerance");
   auto g = run(3, 0.0, 0.3, 7);
-  EXPECT_EQ(reason(g), "gradient tolerance reached") << reason(g);
+  EXPECT_EQ(cvttest::StopReason(g), "gradient tolerance reached");
   // One correction takes another path than seven once the memory fills (on the CPU engine
   // after its five Lloyd steps).
   auto seven = run(3, 0.0, 0.02, 7), one = run(3, 0.0, 0.02, 1);

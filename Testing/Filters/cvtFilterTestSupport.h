@@ -2,11 +2,15 @@
 #ifndef cvtFilterTestSupport_h
 #define cvtFilterTestSupport_h
 
+#include "vtkCVTAlgorithm.h"
 #include "vtkCVTGeometryImageSource.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCommand.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include <string>
@@ -34,6 +38,16 @@ inline vtkSmartPointer<vtkImageData> TorusImage(int w, int h)
   source->SetResolution(w, h);
   source->Update();
   return source->GetOutput();
+}
+
+/// Why the filter's optimisation stopped (its sites' StopReason field).
+inline std::string StopReason(vtkCVTAlgorithm* filter)
+{
+  return filter->GetSitesOutput()
+    ->GetFieldData()
+    ->GetAbstractArray("StopReason")
+    ->GetVariantValue(0)
+    .ToString();
 }
 
 } // namespace cvttest

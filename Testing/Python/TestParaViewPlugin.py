@@ -182,6 +182,16 @@ def main(plugin, data_dir, output_dir):
         proxy.CollapseForValence = default
         proxy.UpdateVTKObjects()
 
+    # The remesh's SiteIterationBudget (fewer iterations at many sites) reaches the filter.
+    if off_reader is not None:
+        check(off_remesh.SiteIterationBudget == 250000,
+              "CVTRemesh: SiteIterationBudget defaults to 250000, not %d" %
+              off_remesh.SiteIterationBudget)
+        off_remesh.SiteIterationBudget = 0
+        off_remesh.UpdateVTKObjects()
+        check("SiteIterationBudget: 0" in str(off_remesh.GetClientSideObject()),
+              "CVTRemesh: SiteIterationBudget reaches the filter")
+
     # The first picture of Show(), as pvpython gives it: the plugin's display hints.
     first_view = CreateView("RenderView")
     shown = {
