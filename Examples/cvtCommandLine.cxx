@@ -52,8 +52,8 @@ Sites:
   --seed S                seed of the initial site sampling (default 1)
 Optimiser:
   --method lloyd|lbfgs    optimiser (default lbfgs)
-  --iterations N          iteration cap (default 100; a surface --input with more than 2500
-                          sites, unless given: 250000/sites, at least 50)
+  --iterations N          iteration cap (default 100; for the cpu engine's remesh of an --input
+                          with more than 2500 sites, unless given: 250000/sites, at least 50)
   --tolerance T           stop when the relative energy decrease falls below T (Lloyd: or
                           when no pixel changes site); 0 runs every iteration (default 1e-6)
   --gradient-tolerance G  stop when |grad F| falls below G times its initial value (default 0)
