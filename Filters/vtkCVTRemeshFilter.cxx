@@ -673,8 +673,11 @@ void TakeCandidate(FidelityCandidate& candidate, TopologyRefinement& best)
 /// Tried and not taken (the 50 CGAL meshes with far points at 1000 sites, mesh_energy.py): a
 /// FarInputShare of 0.8% brought homer within 1% but took mpi over it; a FarInputSitesShare of
 /// 1.5%, or ending the rounds when one gains too little to reach FarInputShare in the rounds
-/// left, brought none within (the last saved time: oblong 1.06 -> 0.68 s, at 1.46 -> 1.49%). The
-/// CVT's own sites stay as they are; the remesh has a vertex more each.
+/// left, brought none within (the last saved time: oblong 1.06 -> 0.68 s, at 1.46 -> 1.49%).
+/// Again later, on the 15 public meshes beyond or near 1% at 1000 sites: a share of 3% (with 4 or
+/// 8 rounds) brought ChineseDragon-10kv within (1.09 -> 0.97%) and took mannequin-devil further
+/// (1.08 -> 1.17%), turbine's valence 6 under 0.75 (0.754 -> 0.742) and occt_sh2's (0.761 ->
+/// 0.748). The CVT's own sites stay as they are; the remesh has a vertex more each.
 /// The measure reads low: between the probes the distance can be 0.1% of the diagonal more (homer
 /// at 1000 sites: 0.894% at the probes, 1.000% by exact distances from 300,000 input points, in a
 /// triangle's inside). Tried and not taken, 11 meshes at 1000 sites against mesh_energy.py:
