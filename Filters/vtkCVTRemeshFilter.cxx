@@ -112,7 +112,9 @@ constexpr double LocalSettlingReach = 2.5;
 /// meshes, 50 instead of 100 kept valence 6 at 0.80 or more wherever it was (Geogram's CVT: 0.81
 /// to 0.82); at 1000 sites, where the remesh's valences and distances have less margin, 50
 /// iterations took 3 more of 20 meshes beyond 1% of the diagonal (bull 0.88 -> 1.61%) and
-/// turbine's valence 6 from 0.754 to 0.717.
+/// turbine's valence 6 from 0.754 to 0.717. 75 there (all 80 meshes, seed 1): 8.6% less time in
+/// the median, the same distances, but valence 6 lower on 53 meshes and higher on 21 (0.004 on
+/// average; turbine 0.754 -> 0.731, and its topology lost; man 0.749 -> 0.758): not taken.
 constexpr int MinimumBudgetIterations = 50;
 
 /// The iteration cap of an optimisation of `sites` sites: `maximum`, lowered to `budget` /
