@@ -1070,41 +1070,55 @@ TEST(RestrictedVoronoi, RemeshFlipsBentPairsTowardsValenceSixWhereTheyStayOnTheI
   }
 }
 
+/// A flat triangular lattice of 7 x 7 points of unit spacing (every inner vertex of valence 6),
+/// its outer ring pinned.
+struct TriangularLattice
+{
+  static constexpr int N = 7;
+  std::vector<std::array<double, 3>> Points;
+  std::vector<char> Pinned;
+  std::vector<std::array<int, 3>> Triangles;
+
+  static int At(int i, int j) { return j * N + i; }
+  TriangularLattice()
+  {
+    for (int j = 0; j < N; ++j)
+    {
+      for (int i = 0; i < N; ++i)
+      {
+        this->Points.push_back({ i + 0.5 * (j % 2), j * std::sqrt(3.0) / 2.0, 0.0 });
+        this->Pinned.push_back(i == 0 || j == 0 || i == N - 1 || j == N - 1);
+      }
+    }
+    for (int j = 0; j + 1 < N; ++j)
+    {
+      for (int i = 0; i + 1 < N; ++i)
+      {
+        if (j % 2 == 0)
+        {
+          this->Triangles.push_back({ At(i, j), At(i + 1, j), At(i, j + 1) });
+          this->Triangles.push_back({ At(i + 1, j), At(i + 1, j + 1), At(i, j + 1) });
+        }
+        else
+        {
+          this->Triangles.push_back({ At(i, j), At(i + 1, j + 1), At(i, j + 1) });
+          this->Triangles.push_back({ At(i, j), At(i + 1, j), At(i + 1, j + 1) });
+        }
+      }
+    }
+  }
+};
+
 TEST(RestrictedVoronoi, RemeshCollapsesEdgesTowardsValenceSix)
 {
-  // A flat triangular lattice, 7 x 7 points of unit spacing (every inner vertex of valence 6),
-  // with a vertex m added at the middle of one inner edge (a, b) and joined to the corners c
-  // and d across it: m has 4 edges, c and d 7. No flip mends that (each leaves a 5 or a 7);
-  // the collapse of m with a, at their middle, leaves every inner vertex with 6 edges.
-  std::vector<std::array<double, 3>> points;
-  std::vector<char> pinned;
-  const int n = 7;
-  for (int j = 0; j < n; ++j)
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      points.push_back({ i + 0.5 * (j % 2), j * std::sqrt(3.0) / 2.0, 0.0 });
-      pinned.push_back(i == 0 || j == 0 || i == n - 1 || j == n - 1);
-    }
-  }
-  const auto at = [n](int i, int j) { return j * n + i; };
-  std::vector<std::array<int, 3>> triangles;
-  for (int j = 0; j + 1 < n; ++j)
-  {
-    for (int i = 0; i + 1 < n; ++i)
-    {
-      if (j % 2 == 0)
-      {
-        triangles.push_back({ at(i, j), at(i + 1, j), at(i, j + 1) });
-        triangles.push_back({ at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
-      }
-      else
-      {
-        triangles.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
-        triangles.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
-      }
-    }
-  }
+  // The lattice with a vertex m added at the middle of one inner edge (a, b) and joined to the
+  // corners c and d across it: m has 4 edges, c and d 7. No flip mends that (each leaves a 5 or
+  // a 7); the collapse of m with a, at their middle, leaves every inner vertex with 6 edges.
+  TriangularLattice lattice;
+  std::vector<std::array<double, 3>>& points = lattice.Points;
+  std::vector<char>& pinned = lattice.Pinned;
+  const std::vector<std::array<int, 3>>& triangles = lattice.Triangles;
+  const auto at = &TriangularLattice::At;
   // The edge (a, b) = ((2, 3), (3, 3)) and its two triangles, split at m.
   const int a = at(2, 3), b = at(3, 3), m = static_cast<int>(points.size());
   points.push_back({ 0.5 * (points[a][0] + points[b][0]), points[a][1], 0.0 });
@@ -1143,6 +1157,68 @@ TEST(RestrictedVoronoi, RemeshCollapsesEdgesTowardsValenceSix)
             << " valence flips, " << remesh.ValenceCollapses
             << " collapses, valence 6 off the border " << quality.InteriorValence6Fraction
             << ", smallest angle " << quality.MinimumAngle << "\n";
+}
+
+TEST(RestrictedVoronoi, RemeshWidensTheCornersOfValenceFlips)
+{
+  // The lattice with one inner edge (a, b) flipped to (c, d), and a and b moved apart (0.65
+  // from the edge's middle) and c and d towards each other (0.35 from it): a and b have 5
+  // edges, c and d 7, every corner is 30 degrees or wider. Flipping back gives every inner
+  // vertex 6 edges but corners of 28.3 degrees at a and b, which the valence flips alone
+  // refuse; moving the four to the mean of their new neighbours widens them again.
+  TriangularLattice lattice;
+  const auto at = &TriangularLattice::At;
+  const int a = at(2, 3), b = at(3, 3), c = at(3, 4), d = at(3, 2);
+  std::vector<std::array<int, 3>> triangles;
+  for (std::array<int, 3> t : lattice.Triangles)
+  {
+    const bool onEdge = std::count(t.begin(), t.end(), a) && std::count(t.begin(), t.end(), b);
+    if (onEdge && std::count(t.begin(), t.end(), c))
+    {
+      std::replace(t.begin(), t.end(), b, d); // (a, b, c) -> (a, d, c)
+    }
+    else if (onEdge)
+    {
+      std::replace(t.begin(), t.end(), a, c); // (b, a, d) -> (b, c, d)
+    }
+    triangles.push_back(t);
+  }
+  std::vector<std::array<double, 3>> points = lattice.Points;
+  const std::array<double, 3> middle = { 3.0, 1.5 * std::sqrt(3.0), 0.0 };
+  points[a] = { middle[0] - 0.65, middle[1], 0.0 };
+  points[b] = { middle[0] + 0.65, middle[1], 0.0 };
+  points[c] = { middle[0], middle[1] + 0.35, 0.0 };
+  points[d] = { middle[0], middle[1] - 0.35, 0.0 };
+  std::vector<double> flat;
+  for (const auto& p : points)
+  {
+    flat.insert(flat.end(), p.begin(), p.end());
+  }
+  const cvt::MeshQuality start = cvt::MeasureMesh(flat, triangles);
+  ASSERT_GE(start.MinimumAngle, 30.0); // no thin triangle for the other repairs to mend
+  ASSERT_LT(start.InteriorValence6Fraction, 1.0);
+  cvt::RestrictedDual dual = DualAt(points, true, lattice.Pinned);
+  dual.Triangles = triangles;
+  const cvt::SurfaceMesh plane = FlatSquare(1, -2.0, 9.0);
+  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1, 8, &plane);
+  const cvt::MeshQuality quality = cvt::MeasureMesh(remesh.Points, remesh.Triangles);
+  EXPECT_EQ(remesh.ValenceFlips, 1);
+  EXPECT_EQ(remesh.ValenceCollapses, 0);
+  EXPECT_DOUBLE_EQ(quality.InteriorValence6Fraction, 1.0);
+  EXPECT_GE(quality.MinimumAngle, 30.0);
+  for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
+  {
+    const size_t site = static_cast<size_t>(remesh.SiteIds[v]);
+    if (lattice.Pinned[site]) // the outer ring stays
+    {
+      EXPECT_EQ(points[site],
+        (std::array<double, 3>{
+          remesh.Points[3 * v], remesh.Points[3 * v + 1], remesh.Points[3 * v + 2] }));
+    }
+  }
+  std::cout << "[ measured ] lattice with a flipped edge: smallest angle " << start.MinimumAngle
+            << " -> " << quality.MinimumAngle << ", valence 6 off the border "
+            << start.InteriorValence6Fraction << " -> " << quality.InteriorValence6Fraction << "\n";
 }
 
 TEST(RestrictedVoronoi, RemeshFillsHolesWithTheWidestTriangles)
