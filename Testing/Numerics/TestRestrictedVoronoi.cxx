@@ -1165,7 +1165,9 @@ TEST(RestrictedVoronoi, RemeshWidensTheCornersOfValenceFlips)
   // from the edge's middle) and c and d towards each other (0.35 from it): a and b have 5
   // edges, c and d 7, every corner is 30 degrees or wider. Flipping back gives every inner
   // vertex 6 edges but corners of 28.3 degrees at a and b, which the valence flips alone
-  // refuse; moving the four to the mean of their new neighbours widens them again.
+  // refuse; moving the four to the mean of their new neighbours widens them again. Flat, and
+  // folded by 35 degrees along a and b's row (the flipped pair then bends by 35 degrees and
+  // lies on the input, as round thin parts).
   TriangularLattice lattice;
   const auto at = &TriangularLattice::At;
   const int a = at(2, 3), b = at(3, 3), c = at(3, 4), d = at(3, 2);
@@ -1183,42 +1185,62 @@ TEST(RestrictedVoronoi, RemeshWidensTheCornersOfValenceFlips)
     }
     triangles.push_back(t);
   }
-  std::vector<std::array<double, 3>> points = lattice.Points;
-  const std::array<double, 3> middle = { 3.0, 1.5 * std::sqrt(3.0), 0.0 };
-  points[a] = { middle[0] - 0.65, middle[1], 0.0 };
-  points[b] = { middle[0] + 0.65, middle[1], 0.0 };
-  points[c] = { middle[0], middle[1] + 0.35, 0.0 };
-  points[d] = { middle[0], middle[1] - 0.35, 0.0 };
-  std::vector<double> flat;
-  for (const auto& p : points)
+  std::vector<std::array<double, 3>> flatPoints = lattice.Points;
+  const double row = 1.5 * std::sqrt(3.0); // a and b's
+  flatPoints[a] = { 3.0 - 0.65, row, 0.0 };
+  flatPoints[b] = { 3.0 + 0.65, row, 0.0 };
+  flatPoints[c] = { 3.0, row + 0.35, 0.0 };
+  flatPoints[d] = { 3.0, row - 0.35, 0.0 };
+  for (const double foldDegrees : { 0.0, 35.0 })
   {
-    flat.insert(flat.end(), p.begin(), p.end());
-  }
-  const cvt::MeshQuality start = cvt::MeasureMesh(flat, triangles);
-  ASSERT_GE(start.MinimumAngle, 30.0); // no thin triangle for the other repairs to mend
-  ASSERT_LT(start.InteriorValence6Fraction, 1.0);
-  cvt::RestrictedDual dual = DualAt(points, true, lattice.Pinned);
-  dual.Triangles = triangles;
-  const cvt::SurfaceMesh plane = FlatSquare(1, -2.0, 9.0);
-  const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1, 8, &plane);
-  const cvt::MeshQuality quality = cvt::MeasureMesh(remesh.Points, remesh.Triangles);
-  EXPECT_EQ(remesh.ValenceFlips, 1);
-  EXPECT_EQ(remesh.ValenceCollapses, 0);
-  EXPECT_DOUBLE_EQ(quality.InteriorValence6Fraction, 1.0);
-  EXPECT_GE(quality.MinimumAngle, 30.0);
-  for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
-  {
-    const size_t site = static_cast<size_t>(remesh.SiteIds[v]);
-    if (lattice.Pinned[site]) // the outer ring stays
+    // Points beyond the row turn up about it; the input is a square from -2 to 9 folded so.
+    const double fold = foldDegrees * 3.14159265358979323846 / 180.0;
+    const auto folded = [&](const std::array<double, 3>& p) -> std::array<double, 3>
     {
-      EXPECT_EQ(points[site],
-        (std::array<double, 3>{
-          remesh.Points[3 * v], remesh.Points[3 * v + 1], remesh.Points[3 * v + 2] }));
+      const double beyond = std::max(0.0, p[1] - row);
+      return { p[0], std::min(p[1], row) + beyond * std::cos(fold), beyond * std::sin(fold) };
+    };
+    std::vector<std::array<double, 3>> points;
+    std::vector<double> flat;
+    for (const auto& p : flatPoints)
+    {
+      points.push_back(folded(p));
+      flat.insert(flat.end(), points.back().begin(), points.back().end());
     }
+    cvt::SurfaceMesh input;
+    for (const auto& p : { std::array<double, 3>{ -2.0, -2.0, 0.0 }, { 9.0, -2.0, 0.0 },
+           { 9.0, row, 0.0 }, { -2.0, row, 0.0 }, { 9.0, 9.0, 0.0 }, { -2.0, 9.0, 0.0 } })
+    {
+      const std::array<double, 3> q = folded(p);
+      input.Points.insert(input.Points.end(), q.begin(), q.end());
+    }
+    input.Triangles = { { 0, 1, 2 }, { 0, 2, 3 }, { 3, 2, 4 }, { 3, 4, 5 } };
+    const cvt::MeshQuality start = cvt::MeasureMesh(flat, triangles);
+    ASSERT_GE(start.MinimumAngle, 30.0); // no thin triangle for the other repairs to mend
+    ASSERT_LT(start.InteriorValence6Fraction, 1.0);
+    cvt::RestrictedDual dual = DualAt(points, true, lattice.Pinned);
+    dual.Triangles = triangles;
+    const cvt::Remesh remesh = cvt::BuildRemesh(dual, 1, 8, &input);
+    const cvt::MeshQuality quality = cvt::MeasureMesh(remesh.Points, remesh.Triangles);
+    EXPECT_EQ(remesh.ValenceFlips, 1) << foldDegrees << " degrees";
+    EXPECT_EQ(remesh.ValenceCollapses + remesh.FittedVertices, 0) << foldDegrees << " degrees";
+    EXPECT_DOUBLE_EQ(quality.InteriorValence6Fraction, 1.0) << foldDegrees << " degrees";
+    EXPECT_GE(quality.MinimumAngle, 30.0) << foldDegrees << " degrees";
+    for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
+    {
+      const size_t site = static_cast<size_t>(remesh.SiteIds[v]);
+      if (lattice.Pinned[site]) // the outer ring stays
+      {
+        EXPECT_EQ(points[site],
+          (std::array<double, 3>{
+            remesh.Points[3 * v], remesh.Points[3 * v + 1], remesh.Points[3 * v + 2] }));
+      }
+    }
+    std::cout << "[ measured ] lattice with a flipped edge, folded by " << foldDegrees
+              << " degrees: smallest angle " << start.MinimumAngle << " -> " << quality.MinimumAngle
+              << ", valence 6 off the border " << start.InteriorValence6Fraction << " -> "
+              << quality.InteriorValence6Fraction << "\n";
   }
-  std::cout << "[ measured ] lattice with a flipped edge: smallest angle " << start.MinimumAngle
-            << " -> " << quality.MinimumAngle << ", valence 6 off the border "
-            << start.InteriorValence6Fraction << " -> " << quality.InteriorValence6Fraction << "\n";
 }
 
 TEST(RestrictedVoronoi, RemeshFillsHolesWithTheWidestTriangles)
