@@ -679,7 +679,14 @@ void TakeCandidate(FidelityCandidate& candidate, TopologyRefinement& best)
 /// Again later, on the 15 public meshes beyond or near 1% at 1000 sites: a share of 3% (with 4 or
 /// 8 rounds) brought ChineseDragon-10kv within (1.09 -> 0.97%) and took mannequin-devil further
 /// (1.08 -> 1.17%), turbine's valence 6 under 0.75 (0.754 -> 0.742) and occt_sh2's (0.761 ->
-/// 0.748). The CVT's own sites stay as they are; the remesh has a vertex more each.
+/// 0.748). And on all 80 at 1000 sites, once the valence flips widened their corners
+/// (WidenFlipped): a share of 2% brought mannequin-devil within (1.09 -> 0.87%) and
+/// ChineseDragon-10kv, gmsh_t13_data and prusa_M3x10_screw closer (1.24 -> 1.03, 1.62 -> 1.41,
+/// 1.43 -> 1.29%) but took couplingdown and cheese further (1.49 -> 1.64, 3.13 -> 3.30%): of the
+/// 15 meshes that change, 8 came closer and 7 went further; valence 6 went down on 7 (spool
+/// 0.790 -> 0.774, ChineseDragon-10kv 0.766 -> 0.756) and up on 5; 18 meshes beyond 1% instead
+/// of 19, as much by chance as by the share: not taken (at 5000 sites no mesh of 24 changed).
+/// The CVT's own sites stay as they are; the remesh has a vertex more each.
 /// The measure reads low: between the probes the distance can be 0.1% of the diagonal more (homer
 /// at 1000 sites: 0.894% at the probes, 1.000% by exact distances from 300,000 input points, in a
 /// triangle's inside). Tried and not taken, 11 meshes at 1000 sites against mesh_energy.py:
