@@ -537,7 +537,10 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
   // Thin parts alone are worth rounds while they become fewer, not the second count. Two
   // rounds without gain end them: after one, triceratops still went from 6 thin parts to none
   // (1000 sites), though most meshes that get such rounds (armadillo, camel, cow, man,
-  // mannequin-devil) gain nothing in their last two.
+  // mannequin-devil) gain nothing in their last two. Ending them after one, on the 30 of 80
+  // public meshes that get rounds at 1000 sites: the same time (median ratio 0.995), three
+  // changed, triceratops 0.88 -> 2.21% of the diagonal from the input and dino 0.96 -> 1.78%
+  // (thin parts that the second round kept), man's valence 6 0.761 -> 0.771.
   const auto worthAnotherRound = [&]()
   {
     return best.Mismatch != 0 ? roundsWithoutGain < MaximumRoundsWithoutGain
