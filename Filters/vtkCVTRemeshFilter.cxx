@@ -117,7 +117,11 @@ constexpr double LocalSettlingReach = 2.5;
 /// iterations took 3 more of 20 meshes beyond 1% of the diagonal (bull 0.88 -> 1.61%) and
 /// turbine's valence 6 from 0.754 to 0.717. 75 there (all 80 meshes, seed 1): 8.6% less time in
 /// the median, the same distances, but valence 6 lower on 53 meshes and higher on 21 (0.004 on
-/// average; turbine 0.754 -> 0.731, and its topology lost; man 0.749 -> 0.758): not taken.
+/// average; turbine 0.754 -> 0.731, and its topology lost; man 0.749 -> 0.758): not taken. 85,
+/// once the valence flips widened their corners (WidenFlipped): 7.2% less time in the median,
+/// valence 6 lower on 49 meshes and higher on 24 (0.0015 on average; man 0.761 -> 0.751,
+/// armadillo 0.770 -> 0.762), energy +0.03%, elk beyond 1% of the diagonal (0.98 -> 1.09%) and
+/// turbine further (1.09 -> 1.40%): not taken.
 constexpr int MinimumBudgetIterations = 50;
 
 /// The iteration cap of an optimisation of `sites` sites: `maximum`, lowered to `budget` /
