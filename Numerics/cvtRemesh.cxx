@@ -1759,7 +1759,10 @@ public:
     this->Update(all);
   }
 
-  /// Measures again after the vertices `moved` moved.
+  /// Measures again after the vertices `moved` moved. Tried and not taken: each edge middle
+  /// measured once instead of from both its triangles (a third of the queries at the start): the
+  /// start took 23.0 instead of 24.4 ms on armadillo at 1000 sites, the queries in the triangles'
+  /// loop being quicker (their paths in the projector's trees shared).
   void Update(const std::vector<int>& moved)
   {
     std::vector<char> triangleMoved(this->Mesh.Triangles.size(), 0);

@@ -269,6 +269,11 @@ void RestrictedVoronoi::Internals::WholeTriangle(int t, Polygon& polygon) const
 // are computed from the edge's end points in a fixed order, so the two triangles of an edge
 // agree on them exactly. Clipping alternates between `polygon` and `spare` (no copies); returns
 // the one that holds the result, or nullptr when it is empty.
+// Tried and not taken (cvtBenchmark dual, armadillo at 1000 sites; same results): keeping each
+// vertex less the site, which saves three subtractions per vertex and bisector, and clipping by
+// the triangle's other corner sites first, to shrink the polygon sooner (8.80 million bisector
+// tests against 8.76): no gain beyond the machine's noise. The bisector tests are about 5 per
+// call, most of them the nearest neighbours, which clip.
 const Polygon* RestrictedVoronoi::Internals::ClipToCell(
   int t, int site, Polygon& polygon, Polygon& spare, Scratch& scratch) const
 {
@@ -900,6 +905,10 @@ void RestrictedVoronoi::Internals::ProcessTriangle(int t, bool dual, std::vector
 }
 
 //------------------------------------------------------------------------------
+// Tried and not taken: keeping per point how far its site was nearer than any other, and
+// skipping the points whose sites cannot have been overtaken since (the sites' largest moves
+// summed): 47% of the points skipped on armadillo at 1000 sites, the same labels, no gain in
+// the optimisation's time (0.592 -> 0.590 s, median of 4).
 void RestrictedVoronoi::Internals::LabelPoints(const std::vector<int>* points)
 {
   const int pointCount = this->Mesh.NumberOfPoints();
