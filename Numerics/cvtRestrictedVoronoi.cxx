@@ -211,8 +211,8 @@ struct RestrictedVoronoi::Internals
     std::vector<const SiteContact*> Pieces;               // in triangle order (Index)
     std::vector<const std::array<double, 6>*> SegmentsOf; // per piece: its border segments
     PieceIndex Index;
-    std::vector<std::array<int, 3>> SameCellAcross; // per piece and edge: Parent's joins
-    std::vector<int> Parent;                        // union-find of the pieces into cell parts
+    std::vector<std::array<int, 3>> SameCellAcross; // per piece and edge: the joins of Parts
+    UnionFind Parts{ 0 };                           // the pieces joined into cell parts
     std::vector<int> HolderOfPoint;                 // per mesh point: the first piece holding it
     std::vector<std::uint8_t> FirstHolder;          // bit k: the first of its cell to hold corner k
     std::vector<int> VertexOfRoot;                  // per union-find root: its dual vertex
@@ -1048,21 +1048,12 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const EdgeTable& edges
     }
   }
   // Feature lines shorter than the threshold are dropped (joined through shared points).
-  std::vector<int> chain(pointCount);
-  std::iota(chain.begin(), chain.end(), 0);
-  const auto find = [&chain](int p)
-  {
-    while (chain[p] != p)
-    {
-      p = chain[p] = chain[chain[p]];
-    }
-    return p;
-  };
+  UnionFind chains(static_cast<size_t>(pointCount));
   for (const Line& line : lines)
   {
     if (line.Kind == 2)
     {
-      chain[find(line.A)] = find(line.B);
+      chains.Join(line.A, line.B);
     }
   }
   // The extent of each line: the diagonal of the box of its points.
@@ -1073,7 +1064,7 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const EdgeTable& edges
     {
       continue;
     }
-    std::array<double, 6>& b = box[find(line.A)];
+    std::array<double, 6>& b = box[chains.Find(line.A)];
     if (b[0] == 0.0 && b[1] == 0.0 && b[3] == 0.0 && b[4] == 0.0 && b[2] == 0.0 && b[5] == 0.0)
     {
       b = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
@@ -1102,8 +1093,8 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const EdgeTable& edges
   {
     if (sharpDegree[p] > 0)
     {
-      ++members[find(p)];
-      junctions[find(p)] += sharpDegree[p] >= 3 ? 1 : 0;
+      ++members[chains.Find(p)];
+      junctions[chains.Find(p)] += sharpDegree[p] >= 3 ? 1 : 0;
     }
   }
   const auto webLike = [&](int root) { return junctions[root] > std::max(8, members[root] / 10); };
@@ -1118,7 +1109,8 @@ void RestrictedVoronoi::Internals::FindBordersAndFeatures(const EdgeTable& edges
   for (const Line& line : lines)
   {
     if (line.Kind == 2 &&
-      (extent(find(line.A)) < MinimumFeatureExtent * diagonal || webLike(find(line.A))))
+      (extent(chains.Find(line.A)) < MinimumFeatureExtent * diagonal ||
+        webLike(chains.Find(line.A))))
     {
       continue;
     }
@@ -1584,27 +1576,8 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   // A restricted cell can have several connected parts (a thin plate: one on each side). Its
   // pieces are joined across the mesh edges they share; each part is a vertex of the dual
   // (the "multinerve"), so the remesh keeps the plate's two sides apart.
-  std::vector<int>& parent = work.Parent;
-  parent.resize(pieces.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto find = [&parent](int p)
-  {
-    while (parent[p] != p)
-    {
-      p = parent[p] = parent[parent[p]];
-    }
-    return p;
-  };
-  // The later root goes under the earlier: a cell's first piece stays the root of its part as the
-  // pieces join in order, so the trees stay flat. With the first root put under the second, each
-  // new piece across an edge became the root of the whole part before it, and the joining took
-  // 4.4 ms of armadillo's 17.4 ms dual at 1000 sites (2.4 ms so). The parts are the same.
-  const auto join = [&parent, &find](int a, int b)
-  {
-    a = find(a);
-    b = find(b);
-    parent[std::max(a, b)] = std::min(a, b);
-  };
+  UnionFind& parts = work.Parts;
+  parts.Reset(pieces.size());
   // The piece of the same cell across each edge a piece holds: looked up in parallel, joined in
   // order, and read again by FindNonDiskParts.
   std::vector<std::array<int, 3>>& sameCellAcross = work.SameCellAcross;
@@ -1627,7 +1600,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
     {
       if (found >= 0)
       {
-        join(static_cast<int>(p), found);
+        parts.Join(static_cast<int>(p), found);
       }
     }
   }
@@ -1665,7 +1638,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
         }
         if (other >= 0)
         {
-          join(static_cast<int>(p), other);
+          parts.Join(static_cast<int>(p), other);
         }
         else
         {
@@ -1680,7 +1653,7 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
   vertexOfPiece.resize(pieces.size());
   for (size_t p = 0; p < pieces.size(); ++p)
   {
-    int& vertex = vertexOfRoot[find(static_cast<int>(p))];
+    int& vertex = vertexOfRoot[parts.Find(static_cast<int>(p))];
     if (vertex < 0)
     {
       vertex = static_cast<int>(dual.Sites.size());
