@@ -30,6 +30,11 @@
 //            against its cell sums (ComputeCellSums, an optimiser evaluation) in the same process,
 //            milliseconds, medians of 21: on an OFF mesh (repaired as the remesh filter does) or
 //            a 200 x 100 torus grid (40,000 triangles), SITES sites (1000) after 5 Lloyd steps.
+//   shape:   the remesh's shaping against the input (cvt::BuildRemesh with a cvt::RemeshInput,
+//            which the remesh filter runs once per candidate remesh) and its measure
+//            (cvt::MeasureFidelity, alone and against the same remesh measured before, as the
+//            fidelity rounds measure a candidate), milliseconds, medians of 11: on the dual of
+//            SITES sites (1000) after 30 Lloyd steps on an OFF mesh or the torus grid.
 //   lifetime: the filters on the OpenGL engine (image filter at 512x512, surface filter at
 //            1024x512, 1000 sites, 2 Lloyd iterations; medians of 3): the first update, and a
 //            second update after changing NumberOfSites (1000 -> 1100) by the same filter (it keeps
@@ -37,13 +42,14 @@
 //            made before).
 // Usage: cvtBenchmark [timing|targets|surface|cpu|lifetime|all]
 //        cvtBenchmark scaling [MAX_SIDE (4096)] [MAX_SITES (100000)]
-//        cvtBenchmark dual [MESH.off|torus] [SITES (1000)]
+//        cvtBenchmark dual|shape [MESH.off|torus] [SITES (1000)]
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
 #include "cvtMemory.h"
 #include "cvtOptimizer.h"
 #include "cvtProblems.h"
 #include "cvtQuality.h"
+#include "cvtRemesh.h"
 #include "cvtRestrictedVoronoi.h"
 #include "cvtSampling.h"
 #include "cvtSurfaceMesh.h"
@@ -662,20 +668,20 @@ bool DualMesh(const std::string& path, cvt::SurfaceMesh& mesh)
   return true;
 }
 
-bool DualTiming(const std::string& path, int siteCount)
+/// An engine on `mesh` (DualMesh of `path`) with `siteCount` sites after `lloydSteps` Lloyd
+/// steps, as the dual and shape timings start from.
+bool SettledEngine(const std::string& path, int siteCount, int lloydSteps, cvt::SurfaceMesh& mesh,
+  cvt::RestrictedVoronoi& engine)
 {
-  cvt::SurfaceMesh mesh;
   if (siteCount < 3 || !DualMesh(path, mesh))
   {
     return false;
   }
-  cvt::RestrictedVoronoi engine;
   cvt::RestrictedProblem problem(engine);
   cvt::OptimizerOptions lloyd;
-  lloyd.MaximumNumberOfIterations = 5; // cells of the sizes the remesh sees
+  lloyd.MaximumNumberOfIterations = lloydSteps;
   cvt::OptimizerResult settled;
   std::string error;
-  cvt::CellSums sums;
   if (!engine.SetMesh(mesh) ||
     !cvt::RunLloyd(problem, cvt::SiteState{ cvt::SampleMeshSites(mesh, siteCount, 1), {} }, lloyd,
       nullptr, settled, error) ||
@@ -685,8 +691,20 @@ bool DualTiming(const std::string& path, int siteCount)
       stderr, "engine failed: %s\n", error.empty() ? engine.GetLastError().c_str() : error.c_str());
     return false;
   }
+  return true;
+}
+
+bool DualTiming(const std::string& path, int siteCount)
+{
+  cvt::SurfaceMesh mesh;
+  cvt::RestrictedVoronoi engine;
+  if (!SettledEngine(path, siteCount, 5, mesh, engine)) // cells of the sizes the remesh sees
+  {
+    return false;
+  }
   std::vector<double> dualTimes, sumTimes;
   cvt::RestrictedDual dual;
+  cvt::CellSums sums;
   for (int k = 0; k < 21; ++k)
   {
     auto start = Clock::now();
@@ -704,6 +722,44 @@ bool DualTiming(const std::string& path, int siteCount)
               "triangles, %d thin parts)\n",
     path.c_str(), mesh.NumberOfTriangles(), siteCount, Median(dualTimes), Median(sumTimes),
     Median(dualTimes) / Median(sumTimes), dual.Triangles.size(), dual.ThinParts);
+  return true;
+}
+
+bool ShapeTiming(const std::string& path, int siteCount)
+{
+  cvt::SurfaceMesh mesh;
+  cvt::RestrictedVoronoi engine;
+  cvt::RestrictedDual dual;
+  if (!SettledEngine(path, siteCount, 30, mesh, engine) || !engine.ComputeDual(dual))
+  {
+    return false;
+  }
+  auto start = Clock::now();
+  const cvt::RemeshInput input(mesh);
+  const double inputTime = 1e3 * SecondsSince(start);
+  const double share = 0.009; // the remesh filter's FarInputShare
+  const size_t budget = static_cast<size_t>(siteCount) / 100;
+  std::vector<double> shapeTimes, measureTimes, againTimes;
+  cvt::Remesh remesh;
+  cvt::RemeshFidelity fidelity;
+  for (int k = 0; k < 11; ++k)
+  {
+    start = Clock::now();
+    remesh = cvt::BuildRemesh(dual, input.Loops.size(), 8, input);
+    shapeTimes.push_back(1e3 * SecondsSince(start));
+    start = Clock::now();
+    fidelity = cvt::MeasureFidelity(remesh, input, share, budget, budget);
+    measureTimes.push_back(1e3 * SecondsSince(start));
+    start = Clock::now();
+    cvt::MeasureFidelity(remesh, input, share, budget, budget, &remesh, &fidelity);
+    againTimes.push_back(1e3 * SecondsSince(start));
+  }
+  std::printf("%s: %d triangles, %zu probes, %d sites: input %.2f ms, shaping %.2f ms, measure "
+              "%.2f ms, measure against the same %.2f ms (%zu vertices, %zu triangles, "
+              "two-way distance %.3f%% of the diagonal)\n",
+    path.c_str(), mesh.NumberOfTriangles(), input.Probes.size() / 3, siteCount, inputTime,
+    Median(shapeTimes), Median(measureTimes), Median(againTimes), remesh.SiteIds.size(),
+    remesh.Triangles.size(), 100.0 * fidelity.TwoWay());
   return true;
 }
 
@@ -725,12 +781,16 @@ int main(int argc, char* argv[])
   {
     return DualTiming(argc > 2 ? argv[2] : "torus", argc > 3 ? std::atoi(argv[3]) : 1000) ? 0 : 1;
   }
+  if (what == "shape")
+  {
+    return ShapeTiming(argc > 2 ? argv[2] : "torus", argc > 3 ? std::atoi(argv[3]) : 1000) ? 0 : 1;
+  }
   if (what != "timing" && what != "targets" && what != "surface" && what != "cpu" &&
     what != "lifetime" && what != "all")
   {
     std::fprintf(stderr,
       "usage: %s [timing|targets|surface|cpu|lifetime|all] | scaling [MAX_SIDE] [MAX_SITES] | "
-      "dual [MESH.off|torus] [SITES]\n",
+      "dual|shape [MESH.off|torus] [SITES]\n",
       argv[0]);
     return 2;
   }
