@@ -30,6 +30,41 @@ using PointTree =
   nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud<Dimension>>,
     PointCloud<Dimension>, Dimension, std::uint32_t>;
 
+/// The nearest point of `tree` to `x`, given a `hint`: a point of the tree near x (as the answer
+/// for the point before, in a run of nearby queries). The walk then only looks for points
+/// strictly nearer than the hint, and skips most of the tree; where several points are nearest,
+/// the hint is kept.
+template<int Dimension>
+std::uint32_t NearestPoint(const PointTree<Dimension>& tree, const PointCloud<Dimension>& cloud,
+  const double* x, std::uint32_t hint)
+{
+  struct NearerThanHint // nanoflann's result-set interface
+  {
+    double Distance2;
+    std::uint32_t Index;
+    size_t size() const { return 1; }
+    bool full() const { return true; }
+    double worstDist() const { return this->Distance2; }
+    bool addPoint(double distance2, std::uint32_t index)
+    {
+      if (distance2 < this->Distance2)
+      {
+        this->Distance2 = distance2;
+        this->Index = index;
+      }
+      return true;
+    }
+  };
+  NearerThanHint nearest{ 0.0, hint };
+  for (int k = 0; k < Dimension; ++k)
+  {
+    const double d = x[k] - cloud.kdtree_get_pt(hint, static_cast<size_t>(k));
+    nearest.Distance2 += d * d;
+  }
+  tree.findNeighbors(nearest, x, nanoflann::SearchParams());
+  return nearest.Index;
+}
+
 } // namespace cvt
 
 #endif
