@@ -1,11 +1,15 @@
 #include "cvtExactEngine.h"
 #include "cvtExactVoronoi.h"
+#include "cvtPointCloud.h"
 #include "cvtSampling.h"
 #include "cvtTwoRanks.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
 
 TEST(ExactVoronoi, UnitSquareIntegrals)
 {
@@ -171,4 +175,57 @@ TEST(ExactEngine, SharedWorkGivesTheSumsOfOneProcessToTheBit)
   cvt::CellSums none;
   EXPECT_FALSE(cutOff.ComputeCellSums(none));
   EXPECT_NE(cutOff.GetLastError().find("other processes"), std::string::npos);
+}
+
+// The nearest point from a hint (the remesh's probes search their nearest vertex from the
+// previous probe's) is the brute-force nearest, whatever the hint: near, far or the answer.
+TEST(PointCloud, NearestPointFromAnyHintIsTheBruteForceNearest)
+{
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  std::vector<double> points(3 * 500);
+  for (double& x : points)
+  {
+    x = coordinate(random);
+  }
+  cvt::PointCloud<3> cloud{ &points };
+  cvt::PointTree<3> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  const auto distance2 = [&points](const double* x, std::uint32_t i)
+  {
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      d2 += (x[k] - points[3 * i + k]) * (x[k] - points[3 * i + k]);
+    }
+    return d2;
+  };
+  std::uint32_t hint = 0;
+  for (int q = 0; q < 2000; ++q)
+  {
+    const double x[3] = { coordinate(random), coordinate(random), coordinate(random) };
+    std::uint32_t brute = 0;
+    for (std::uint32_t i = 1; i < 500; ++i)
+    {
+      if (distance2(x, i) < distance2(x, brute))
+      {
+        brute = i;
+      }
+    }
+    // The previous answer (a point anywhere), the far corner's point, and the answer itself.
+    for (std::uint32_t start : { hint, static_cast<std::uint32_t>(q % 500), brute })
+    {
+      const std::uint32_t found = cvt::NearestPoint(tree, cloud, x, start);
+      ASSERT_EQ(distance2(x, found), distance2(x, brute)) << "query " << q << " hint " << start;
+    }
+    hint = brute;
+  }
+  // Where two points are equally near, the hint is kept.
+  const std::vector<double> pair{ -1.0, 0.0, 0.0, 1.0, 0.0, 0.0 };
+  cvt::PointCloud<3> pairCloud{ &pair };
+  cvt::PointTree<3> pairTree(3, pairCloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  pairTree.buildIndex();
+  const double middle[3] = { 0.0, 0.5, 0.0 };
+  EXPECT_EQ(cvt::NearestPoint(pairTree, pairCloud, middle, 0), 0u);
+  EXPECT_EQ(cvt::NearestPoint(pairTree, pairCloud, middle, 1), 1u);
 }
