@@ -35,8 +35,7 @@ using PointTree =
 /// strictly nearer than the hint, and skips most of the tree; where several points are nearest,
 /// the hint is kept.
 template<int Dimension>
-std::uint32_t NearestPoint(const PointTree<Dimension>& tree, const PointCloud<Dimension>& cloud,
-  const double* x, std::uint32_t hint)
+std::uint32_t NearestPoint(const PointTree<Dimension>& tree, const double* x, std::uint32_t hint)
 {
   struct NearerThanHint // nanoflann's result-set interface
   {
@@ -55,12 +54,8 @@ std::uint32_t NearestPoint(const PointTree<Dimension>& tree, const PointCloud<Di
       return true;
     }
   };
-  NearerThanHint nearest{ 0.0, hint };
-  for (int k = 0; k < Dimension; ++k)
-  {
-    const double d = x[k] - cloud.kdtree_get_pt(hint, static_cast<size_t>(k));
-    nearest.Distance2 += d * d;
-  }
+  // The hint's distance as the tree's own metric measures the points it offers.
+  NearerThanHint nearest{ tree.distance.evalMetric(x, hint, Dimension), hint };
   tree.findNeighbors(nearest, x, nanoflann::SearchParams());
   return nearest.Index;
 }

@@ -927,7 +927,7 @@ ProbeNeighbourhoods::ProbeNeighbourhoods(const Remesh& remesh, const std::vector
       std::uint32_t hint = 0;
       for (vtkIdType p = begin; p < end; ++p)
       {
-        hint = NearestPoint(tree, cloud, &probes[3 * static_cast<size_t>(p)], hint);
+        hint = NearestPoint(tree, &probes[3 * static_cast<size_t>(p)], hint);
         nearest[static_cast<size_t>(p)] = hint;
       }
     });

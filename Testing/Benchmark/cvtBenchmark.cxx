@@ -730,8 +730,13 @@ bool ShapeTiming(const std::string& path, int siteCount)
   cvt::SurfaceMesh mesh;
   cvt::RestrictedVoronoi engine;
   cvt::RestrictedDual dual;
-  if (!SettledEngine(path, siteCount, 30, mesh, engine) || !engine.ComputeDual(dual))
+  if (!SettledEngine(path, siteCount, 30, mesh, engine))
   {
+    return false;
+  }
+  if (!engine.ComputeDual(dual))
+  {
+    std::fprintf(stderr, "engine failed: %s\n", engine.GetLastError().c_str());
     return false;
   }
   auto start = Clock::now();

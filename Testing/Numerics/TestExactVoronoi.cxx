@@ -215,7 +215,7 @@ TEST(PointCloud, NearestPointFromAnyHintIsTheBruteForceNearest)
     // The previous answer (a point anywhere), the far corner's point, and the answer itself.
     for (std::uint32_t start : { hint, static_cast<std::uint32_t>(q % 500), brute })
     {
-      const std::uint32_t found = cvt::NearestPoint(tree, cloud, x, start);
+      const std::uint32_t found = cvt::NearestPoint(tree, x, start);
       ASSERT_EQ(distance2(x, found), distance2(x, brute)) << "query " << q << " hint " << start;
     }
     hint = brute;
@@ -226,6 +226,6 @@ TEST(PointCloud, NearestPointFromAnyHintIsTheBruteForceNearest)
   cvt::PointTree<3> pairTree(3, pairCloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   pairTree.buildIndex();
   const double middle[3] = { 0.0, 0.5, 0.0 };
-  EXPECT_EQ(cvt::NearestPoint(pairTree, pairCloud, middle, 0), 0u);
-  EXPECT_EQ(cvt::NearestPoint(pairTree, pairCloud, middle, 1), 1u);
+  EXPECT_EQ(cvt::NearestPoint(pairTree, middle, 0), 0u);
+  EXPECT_EQ(cvt::NearestPoint(pairTree, middle, 1), 1u);
 }
