@@ -1155,6 +1155,10 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
         measureOwn(v, 0.0);
       }
       const int far = ownFarthestAt[static_cast<size_t>(v)];
+      if (far < 0)
+      {
+        continue; // a neighbour's move brought all its points onto the remesh
+      }
       // The vertices whose points v's triangles can be nearest to.
       std::vector<int> group{ v };
       for (int w : neighbours[static_cast<size_t>(v)])
