@@ -418,6 +418,12 @@ bool SettleSitesLocally(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& 
 /// sweep the mesh once more, for the energy of the moved sites: one sweep in four for nothing
 /// where only the sites are wanted, as in the topology rounds (the same remeshes of the 80
 /// public meshes at 1000 sites; armadillo's 6 rounds, 0.04 s).
+/// Tried and not taken: moving only the added sites and those within two or three site spacings
+/// of them (SettleSitesLocally) in the rounds. Where every round moved locally, ALSTOM_TEST4 lost
+/// its topology (a seventh part). Where only rounds after the topology was reached (thin parts
+/// alone) did, 11 of 65 CGAL meshes changed at 1000 sites (armadillo 2.14 -> 1.79 s end to end,
+/// one run each on a noisy machine), but homer went beyond 1% of the diagonal (0.95 -> 1.01%):
+/// the sites the rounds leave are where the fidelity rounds start from.
 bool MoveToCentroids(
   cvt::RestrictedVoronoi& engine, int iterations, std::vector<double>& sites, std::string& error)
 {
