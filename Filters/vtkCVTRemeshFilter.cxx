@@ -108,12 +108,16 @@ constexpr int FarSiteSettlingIterations = 3;
 constexpr double FarSiteNeighbourhood = 2.0;
 /// Lloyd iterations of a few sites among others that stay clip only the triangles within this
 /// many site spacings of the moving sites (SettleSitesLocally): a cell reaches about 0.6 of one
-/// from its site, and a settling site moves a fraction of one. A moving cell that still reaches
-/// the edge of them has the whole mesh clipped, so the reach trades clipping for such fallbacks,
-/// not accuracy (remeshes byte-identical to those at 2.5 on 65 CGAL meshes at 1000 and 5000
-/// sites and 25 with borders): at 1.25, armadillo subdivided to 832k triangles settles its added
-/// sites in 0.72 s instead of 1.03; at 0.8, cells reach the edge and the whole mesh is clipped.
+/// from its site, and a settling site moves a fraction of one. Where a moving cell still reaches
+/// the edge of them (cells stretched round holes), the reach doubles for the iterations left, up
+/// to the farthest reach, and beyond that the whole mesh is clipped. The moving cells' sums are
+/// exact either way, so the reach trades clipping against such retries, not accuracy: against a
+/// fixed reach of 2.5 with the whole mesh beyond, remeshes are byte-identical on 65 CGAL meshes
+/// at 1000 and 5000 sites and 25 with borders. Armadillo subdivided to 832k triangles settles its
+/// added sites in 0.72 s instead of 1.03. A fixed 1.25 had every iteration of elephant-with-holes
+/// and b9_mesh clip the whole mesh; doubling, they reach 2.5 or 5 and none does.
 constexpr double LocalSettlingReach = 1.25;
+constexpr double LocalSettlingFarthestReach = 5.0;
 /// The fewest iterations SiteIterationBudget leaves the optimisation: at 5000 sites on 80 public
 /// meshes, 50 instead of 100 kept valence 6 at 0.80 or more wherever it was (Geogram's CVT: 0.81
 /// to 0.82); at 1000 sites, where the remesh's valences and distances have less margin, 50
@@ -373,8 +377,9 @@ double SiteSpacing(const cvt::SurfaceMesh& surface, const std::vector<double>& s
 
 /// Moves the sites from `first` on, and those within `radius` of them, to their cells'
 /// centroids, `iterations` times; the other sites stay. Only the triangles within reach of the
-/// moving sites are clipped (LocalSettlingReach site spacings, `spacing` each), unless a moving
-/// cell reaches the edge of them; then the whole mesh.
+/// moving sites are clipped (LocalSettlingReach site spacings, `spacing` each); where a moving
+/// cell reaches the edge of them, those within twice as many, up to LocalSettlingFarthestReach,
+/// and then the whole mesh.
 bool SettleSitesLocally(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh, size_t first,
   double radius, double spacing, int iterations, std::vector<double>& sites, std::string& error)
 {
@@ -386,15 +391,25 @@ bool SettleSitesLocally(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& 
   {
     movingSites.insert(movingSites.end(), &sites[3 * i], &sites[3 * i] + 3);
   }
-  const std::vector<int> near = cvt::TrianglesNear(mesh, movingSites, LocalSettlingReach * spacing);
+  double reach = LocalSettlingReach * spacing;
+  std::vector<int> near = cvt::TrianglesNear(mesh, movingSites, reach);
+  const auto beyond = [&moving](const std::vector<char>& reachBeyond)
+  { return std::any_of(moving.begin(), moving.end(), [&](int i) { return reachBeyond[i]; }); };
   for (int iteration = 0; iteration < iterations; ++iteration)
   {
     cvt::CellSums sums;
     std::vector<char> reachBeyond;
     bool summed = engine.SetSites(sites) && engine.ComputeCellSums(near, sums, reachBeyond);
-    if (summed && std::any_of(moving.begin(), moving.end(), [&](int i) { return reachBeyond[i]; }))
+    while (summed && beyond(reachBeyond))
     {
-      summed = engine.ComputeCellSums(sums);
+      if (reach >= LocalSettlingFarthestReach * spacing)
+      {
+        summed = engine.ComputeCellSums(sums);
+        break;
+      }
+      reach *= 2.0; // and so for the iterations left
+      near = cvt::TrianglesNear(mesh, movingSites, reach);
+      summed = engine.ComputeCellSums(near, sums, reachBeyond);
     }
     if (!summed)
     {
