@@ -106,18 +106,6 @@ constexpr int AngleRounds = 3;
 /// neighbours and a vertex near the point (RefineForFidelity).
 constexpr int FarSiteSettlingIterations = 3;
 constexpr double FarSiteNeighbourhood = 2.0;
-/// Lloyd iterations of a few sites among others that stay clip only the triangles within this
-/// many site spacings of the moving sites (SettleSitesLocally): a cell reaches about 0.6 of one
-/// from its site, and a settling site moves a fraction of one. Where a moving cell still reaches
-/// the edge of them (cells stretched round holes), the reach doubles for the iterations left, up
-/// to the farthest reach, and beyond that the whole mesh is clipped. The moving cells' sums are
-/// exact either way, so the reach trades clipping against such retries, not accuracy: against a
-/// fixed reach of 2.5 with the whole mesh beyond, remeshes are byte-identical on 65 CGAL meshes
-/// at 1000 and 5000 sites and 25 with borders. Armadillo subdivided to 832k triangles settles its
-/// added sites in 0.72 s instead of 1.03. A fixed 1.25 had every iteration of elephant-with-holes
-/// and b9_mesh clip the whole mesh; doubling, they reach 2.5 or 5 and none does.
-constexpr double LocalSettlingReach = 1.25;
-constexpr double LocalSettlingFarthestReach = 5.0;
 /// The fewest iterations SiteIterationBudget leaves the optimisation: at 5000 sites on 80 public
 /// meshes, 50 instead of 100 kept valence 6 at 0.80 or more wherever it was (Geogram's CVT: 0.81
 /// to 0.82); at 1000 sites, where the remesh's valences and distances have less margin, 50
@@ -375,60 +363,6 @@ double SiteSpacing(const cvt::SurfaceMesh& surface, const std::vector<double>& s
   return std::sqrt(cvt::SurfaceArea(surface) / static_cast<double>(sites.size() / 3));
 }
 
-/// Moves the sites from `first` on, and those within `radius` of them, to their cells'
-/// centroids, `iterations` times; the other sites stay. Only the triangles within reach of the
-/// moving sites are clipped (LocalSettlingReach site spacings, `spacing` each); where a moving
-/// cell reaches the edge of them, those within twice as many, up to LocalSettlingFarthestReach,
-/// and then the whole mesh.
-bool SettleSitesLocally(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh& mesh, size_t first,
-  double radius, double spacing, int iterations, std::vector<double>& sites, std::string& error)
-{
-  const std::vector<double> added(
-    sites.begin() + 3 * static_cast<std::ptrdiff_t>(first), sites.end());
-  const std::vector<int> moving = cvt::PointsNear(sites, added, radius);
-  std::vector<double> movingSites;
-  for (int i : moving)
-  {
-    movingSites.insert(movingSites.end(), &sites[3 * i], &sites[3 * i] + 3);
-  }
-  double reach = LocalSettlingReach * spacing;
-  std::vector<int> near = cvt::TrianglesNear(mesh, movingSites, reach);
-  const auto beyond = [&moving](const std::vector<char>& reachBeyond)
-  { return std::any_of(moving.begin(), moving.end(), [&](int i) { return reachBeyond[i]; }); };
-  for (int iteration = 0; iteration < iterations; ++iteration)
-  {
-    cvt::CellSums sums;
-    std::vector<char> reachBeyond;
-    bool summed = engine.SetSites(sites) && engine.ComputeCellSums(near, sums, reachBeyond);
-    while (summed && beyond(reachBeyond))
-    {
-      if (reach >= LocalSettlingFarthestReach * spacing)
-      {
-        summed = engine.ComputeCellSums(sums);
-        break;
-      }
-      reach *= 2.0; // and so for the iterations left
-      near = cvt::TrianglesNear(mesh, movingSites, reach);
-      summed = engine.ComputeCellSums(near, sums, reachBeyond);
-    }
-    if (!summed)
-    {
-      error = engine.GetLastError();
-      return false;
-    }
-    for (int i : moving)
-    {
-      if (sums.Mass[i] > 0.0) // moments are about the site
-      {
-        sites[3 * i] += sums.MomentX[i] / sums.Mass[i];
-        sites[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
-        sites[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
-      }
-    }
-  }
-  return true;
-}
-
 /// `iterations` Lloyd iterations of `sites`, the engine left with the moved sites. RunLloyd would
 /// sweep the mesh once more, for the energy of the moved sites: one sweep in four for nothing
 /// where only the sites are wanted, as in the topology rounds (the same remeshes of the 80
@@ -485,7 +419,7 @@ bool SettleUnderCellSizes(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh
   cvt::RestrictedDual dual;
   const bool sized =
     engine.SetDensity(cvt::DensityOfCellSizes(mesh, engine.GetPointLabels(), sums.Mass)) &&
-    SettleSitesLocally(engine, mesh, firstAdded, SettledNeighbourhood * spacing, spacing,
+    cvt::SettleSitesLocally(engine, mesh, firstAdded, SettledNeighbourhood * spacing, spacing,
       SettledIterations, settled, error);
   if (!engine.SetDensity(mesh.Density) || !sized || !engine.SetSites(settled) ||
     !engine.ComputeDual(dual))
@@ -684,7 +618,7 @@ bool ComputeCandidateDual(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh
   size_t firstAdded, double spacing, bool settle, FidelityCandidate& candidate, std::string& error)
 {
   if (settle &&
-    !SettleSitesLocally(engine, mesh, firstAdded, FarSiteNeighbourhood * spacing, spacing,
+    !cvt::SettleSitesLocally(engine, mesh, firstAdded, FarSiteNeighbourhood * spacing, spacing,
       FarSiteSettlingIterations, candidate.Sites, error))
   {
     error = "the settling of the sites at far input points failed: " + error;

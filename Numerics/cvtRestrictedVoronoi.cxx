@@ -87,6 +87,18 @@ constexpr double FeatureAngleDegrees = 60.0;
 /// ... when the lines they form span at least this fraction of the bounding-box diagonal and
 /// meet at few junctions (scanner noise and sliver triangles make small webs of sharp edges).
 constexpr double MinimumFeatureExtent = 0.15;
+/// Lloyd iterations of a few sites among others that stay clip only the triangles within this
+/// many site spacings of the moving sites (SettleSitesLocally): a cell reaches about 0.6 of one
+/// from its site, and a settling site moves a fraction of one. Where a moving cell still reaches
+/// the edge of them (cells stretched round holes), the reach doubles for the iterations left, up
+/// to the farthest reach, and beyond that the whole mesh is clipped. The moving cells' sums are
+/// exact either way, so the reach trades clipping against such retries, not accuracy: against a
+/// fixed reach of 2.5 with the whole mesh beyond, remeshes are byte-identical on 65 CGAL meshes
+/// at 1000 and 5000 sites and 25 with borders. Armadillo subdivided to 832k triangles settles its
+/// added sites in 0.72 s instead of 1.03. A fixed 1.25 had every iteration of elephant-with-holes
+/// and b9_mesh clip the whole mesh; doubling, they reach 2.5 or 5 and none does.
+constexpr double LocalSettlingReach = 1.25;
+constexpr double LocalSettlingFarthestReach = 5.0;
 
 /// The dual pass's pieces (one per cell and triangle) in triangle order: those of triangle t
 /// are [First[t], First[t + 1]), a few at most. What the joins and Euler characteristics read of
@@ -1812,6 +1824,56 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
     }
   }
   d.FindNonDiskParts(work, dual);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool SettleSitesLocally(RestrictedVoronoi& engine, const SurfaceMesh& mesh, size_t first,
+  double radius, double spacing, int iterations, std::vector<double>& sites, std::string& error)
+{
+  const std::vector<double> added(
+    sites.begin() + 3 * static_cast<std::ptrdiff_t>(first), sites.end());
+  const std::vector<int> moving = PointsNear(sites, added, radius);
+  std::vector<double> movingSites;
+  for (int i : moving)
+  {
+    movingSites.insert(movingSites.end(), &sites[3 * i], &sites[3 * i] + 3);
+  }
+  double reach = LocalSettlingReach * spacing;
+  std::vector<int> near = TrianglesNear(mesh, movingSites, reach);
+  const auto beyond = [&moving](const std::vector<char>& reachBeyond)
+  { return std::any_of(moving.begin(), moving.end(), [&](int i) { return reachBeyond[i]; }); };
+  for (int iteration = 0; iteration < iterations; ++iteration)
+  {
+    CellSums sums;
+    std::vector<char> reachBeyond;
+    bool summed = engine.SetSites(sites) && engine.ComputeCellSums(near, sums, reachBeyond);
+    while (summed && beyond(reachBeyond))
+    {
+      if (reach >= LocalSettlingFarthestReach * spacing)
+      {
+        summed = engine.ComputeCellSums(sums);
+        break;
+      }
+      reach *= 2.0; // and so for the iterations left
+      near = TrianglesNear(mesh, movingSites, reach);
+      summed = engine.ComputeCellSums(near, sums, reachBeyond);
+    }
+    if (!summed)
+    {
+      error = engine.GetLastError();
+      return false;
+    }
+    for (int i : moving)
+    {
+      if (sums.Mass[i] > 0.0) // moments are about the site
+      {
+        sites[3 * i] += sums.MomentX[i] / sums.Mass[i];
+        sites[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
+        sites[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
+      }
+    }
+  }
   return true;
 }
 

@@ -508,6 +508,82 @@ TEST(RestrictedVoronoi, SumsOverListedTrianglesAreThoseOfTheCellsWithinThem)
   EXPECT_NE(engine.GetLastError().find("not one of the mesh's"), std::string::npos);
 }
 
+TEST(RestrictedVoronoi, LocalSettlingMovesSitesAsLloydStepsOverTheWholeMesh)
+{
+  // Sites crowded below z = 0.2 on a sphere and four above it (cells there several spacings
+  // wide), three added at the crowd's edge. Settled locally, the triangles near the moving sites
+  // are clipped, farther where a moving cell reaches the edge of them; the moved sites must be
+  // those of Lloyd steps of the same sites over the whole mesh, to the bit.
+  const cvt::SurfaceMesh mesh = Sphere(4);
+  std::vector<double> sites;
+  const std::vector<double> crowd = SitesNearSphere(400, 7);
+  for (size_t i = 0; i < crowd.size(); i += 3)
+  {
+    if (crowd[i + 2] < 0.2)
+    {
+      sites.insert(sites.end(), &crowd[i], &crowd[i] + 3);
+    }
+  }
+  const auto onSphere = [](double azimuth, double z)
+  {
+    const double r = std::sqrt(1.0 - z * z);
+    return std::vector<double>{ r * std::cos(azimuth), r * std::sin(azimuth), z };
+  };
+  for (double azimuth : { 0.0, 2.1, 4.2 })
+  {
+    const std::vector<double> sparse = onSphere(azimuth, 0.55);
+    sites.insert(sites.end(), sparse.begin(), sparse.end());
+  }
+  sites.insert(sites.end(), { 0.0, 0.0, 1.0 });
+  const size_t first = sites.size() / 3;
+  std::vector<double> added;
+  for (double azimuth : { 0.0, 2.1, 4.2 })
+  {
+    const std::vector<double> at = onSphere(azimuth, 0.25);
+    added.insert(added.end(), at.begin(), at.end());
+  }
+  sites.insert(sites.end(), added.begin(), added.end());
+  const double spacing = std::sqrt(cvt::SurfaceArea(mesh) / static_cast<double>(sites.size() / 3));
+  const double radius = 2.0 * spacing;
+  const std::vector<int> moving = cvt::PointsNear(sites, added, radius);
+  cvt::RestrictedVoronoi engine;
+  ASSERT_TRUE(engine.SetMesh(mesh) && engine.SetSites(sites));
+  // The test needs a moving cell reaching beyond the first reach (1.25 spacings).
+  std::vector<double> movingSites;
+  for (int i : moving)
+  {
+    movingSites.insert(movingSites.end(), &sites[3 * i], &sites[3 * i] + 3);
+  }
+  cvt::CellSums sums;
+  std::vector<char> reachBeyond;
+  ASSERT_TRUE(engine.ComputeCellSums(
+    cvt::TrianglesNear(mesh, movingSites, 1.25 * spacing), sums, reachBeyond));
+  EXPECT_TRUE(std::any_of(moving.begin(), moving.end(), [&](int i) { return reachBeyond[i]; }));
+  // Lloyd steps of the moving sites over the whole mesh, the others kept.
+  std::vector<double> reference = sites;
+  for (int iteration = 0; iteration < 3; ++iteration)
+  {
+    ASSERT_TRUE(engine.SetSites(reference) && engine.ComputeCellSums(sums));
+    for (int i : moving)
+    {
+      if (sums.Mass[i] > 0.0) // a site whose cell misses the sphere stays
+      {
+        reference[3 * i] += sums.MomentX[i] / sums.Mass[i];
+        reference[3 * i + 1] += sums.MomentY[i] / sums.Mass[i];
+        reference[3 * i + 2] += sums.MomentZ[i] / sums.Mass[i];
+      }
+    }
+  }
+  std::vector<double> settled = sites;
+  std::string error;
+  ASSERT_TRUE(cvt::SettleSitesLocally(engine, mesh, first, radius, spacing, 3, settled, error))
+    << error;
+  EXPECT_EQ(settled, reference);
+  EXPECT_GT(moving.size(), added.size() / 3); // neighbours moved too
+  EXPECT_GT(std::sqrt(cvt::Distance2(&settled[3 * (first - 2)], &sites[3 * (first - 2)])),
+    0.1 * spacing); // a sparse site above the crowd
+}
+
 TEST(RestrictedVoronoi, SharedWorkAddsUpToTheSumsOfOneProcess)
 {
   // Two engines play two MPI ranks: each clips half of the blocks of triangles; part 1 hands
