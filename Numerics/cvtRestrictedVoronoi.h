@@ -104,11 +104,11 @@ private:
 
 /// Moves the sites from `first` on, and those within `radius` of them, to their cells'
 /// centroids, `iterations` times; the other sites stay. Only the triangles within reach of the
-/// moving sites are clipped (LocalSettlingReach site spacings, `spacing` each); where a moving
-/// cell reaches the edge of them, those within twice as many, up to LocalSettlingFarthestReach,
-/// and then the whole mesh: the moving cells' sums are those of the whole mesh. The engine is
-/// left with the sites as they were before the last move. False, and `error`, when the engine
-/// fails.
+/// moving sites are clipped (1.25 site spacings, `spacing` each: LocalSettlingReach); where a
+/// moving cell reaches the edge of them, those within twice as many, up to 5
+/// (LocalSettlingFarthestReach), and then the whole mesh: the moving cells' sums are those of the
+/// whole mesh. The engine is left with the sites as they were before the last move. False, and
+/// `error`, when the engine fails.
 CVTNUMERICS_EXPORT bool SettleSitesLocally(RestrictedVoronoi& engine, const SurfaceMesh& mesh,
   size_t first, double radius, double spacing, int iterations, std::vector<double>& sites,
   std::string& error);
