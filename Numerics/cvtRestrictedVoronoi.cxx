@@ -1831,6 +1831,13 @@ bool RestrictedVoronoi::ComputeDual(RestrictedDual& dual)
 bool SettleSitesLocally(RestrictedVoronoi& engine, const SurfaceMesh& mesh, size_t first,
   double radius, double spacing, int iterations, std::vector<double>& sites, std::string& error)
 {
+  if (sites.size() % 3 != 0 || first > sites.size() / 3 || !(spacing > 0.0) ||
+    !std::isfinite(spacing))
+  {
+    error = "local settling needs x, y, z sites, the first moving one among them and a "
+            "positive site spacing";
+    return false;
+  }
   const std::vector<double> added(
     sites.begin() + 3 * static_cast<std::ptrdiff_t>(first), sites.end());
   const std::vector<int> moving = PointsNear(sites, added, radius);

@@ -108,7 +108,7 @@ private:
 /// moving cell reaches the edge of them, those within twice as many, up to 5
 /// (LocalSettlingFarthestReach), and then the whole mesh: the moving cells' sums are those of the
 /// whole mesh. The engine is left with the sites as they were before the last move. False, and
-/// `error`, when the engine fails.
+/// `error`, when the engine fails, `first` is beyond the sites or `spacing` is not positive.
 CVTNUMERICS_EXPORT bool SettleSitesLocally(RestrictedVoronoi& engine, const SurfaceMesh& mesh,
   size_t first, double radius, double spacing, int iterations, std::vector<double>& sites,
   std::string& error);

@@ -580,6 +580,12 @@ TEST(RestrictedVoronoi, LocalSettlingMovesSitesAsLloydStepsOverTheWholeMesh)
     << error;
   EXPECT_EQ(settled, reference);
   EXPECT_GT(moving.size(), added.size() / 3); // neighbours moved too
+  std::vector<double> unchanged = sites;
+  EXPECT_FALSE(cvt::SettleSitesLocally(
+    engine, mesh, sites.size() / 3 + 1, radius, spacing, 3, unchanged, error));
+  EXPECT_FALSE(cvt::SettleSitesLocally(engine, mesh, first, radius, 0.0, 3, unchanged, error));
+  EXPECT_NE(error.find("positive site spacing"), std::string::npos);
+  EXPECT_EQ(unchanged, sites);
   EXPECT_GT(std::sqrt(cvt::Distance2(&settled[3 * (first - 2)], &sites[3 * (first - 2)])),
     0.1 * spacing); // a sparse site above the crowd
 }
