@@ -1019,8 +1019,8 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
   // remeshes; `cvtBenchmark shape` at 1000 sites: cheese 1.15 -> 0.68 s, armadillo 86 -> 75 ms,
   // rotor 87 -> 81 ms).
   std::vector<double> slotDistance2(probeCount, 0.0);
-  std::vector<std::uint32_t> slotVersion(probeCount, 0);
-  std::vector<std::uint32_t> triangleVersion(remesh.Triangles.size(), 1); // 0: never measured
+  std::vector<std::uint32_t> slotVersion(probeCount, 0); // 0: no distance remembered
+  std::vector<std::uint32_t> triangleVersion(remesh.Triangles.size(), 1); // never 0
   const auto moveVertex = [&](int v, const double* to)
   {
     std::copy(to, to + 3, point(v));
