@@ -494,21 +494,22 @@ TEST(RemeshFilter, InputPointsFarFromTheRemeshGetSitesOfTheirOwn)
 {
   // At 200 sites the remesh's flat triangles cut the spike's tip off, 2.15% of the bounding-box
   // diagonal away. Sites added at the input points farther than 0.9% from the remesh (at most
-  // 1% of its vertices, here 2) give it vertices there: the input then lies within 1.11% of it.
-  // The CVT's own sites stay 200.
+  // 1% of its vertices, here 2) give it vertices there: the input then lies within 1.11% of it,
+  // still beyond the target of 1%, and a second pass with three times the budget takes it to
+  // 0.69%. The CVT's own sites stay 200.
   vtkSmartPointer<vtkPolyData> spike = SphereWithSpike();
   RemeshRun run(spike, 200, 100);
   ASSERT_TRUE(run.Status) << run.Log->Errors;
   vtkPolyData* sites = run.Filter->GetSitesOutput();
   EXPECT_EQ(sites->GetNumberOfPoints(), 200);
   EXPECT_GE(Field(sites, "FarPointSites"), 1);
-  EXPECT_LE(Field(sites, "FarPointSites"), 2);
+  EXPECT_LE(Field(sites, "FarPointSites"), 6);
   EXPECT_GE(Field(sites, "AddedSites"), Field(sites, "FarPointSites"));
   ExpectTopology(run.Remesh(), 1, 0, 0);
   EXPECT_GE(Field(run.Remesh(), "MinimumAngle"), 25.0);
   // Independently: the input's points against the remesh's triangles.
   const double farthest = FarthestInputPoint(spike, run.Remesh());
-  EXPECT_LT(farthest, 0.013);
+  EXPECT_LT(farthest, 0.01);
   std::cout << "[ measured ] spike at 200 sites: " << Field(sites, "FarPointSites")
             << " sites at far input points; the input lies within " << 100.0 * farthest
             << "% of the diagonal of the remesh\n";
@@ -572,6 +573,32 @@ TEST(RemeshFilter, FarInputPointsAreTriedByHalvesWhenAllOfThemAtOnceMissTheTarge
   std::cout << "[ measured ] sphere with four holes at 500 sites: " << Field(sites, "FarPointSites")
             << " sites at far input points; the input lies within " << 100.0 * farthest
             << "% of the diagonal of the remesh\n";
+}
+
+TEST(RemeshFilter, FarPointsLeftBeyondTheTargetGetASecondBudget)
+{
+  // Twelve spikes at 200 sites: the first budget of sites at far input points (1% of the
+  // vertices, 2 sites) leaves the remesh 1.18% of the diagonal from the input (by the filter's
+  // measure) at the tips. Where it still lies beyond the target of 1% once that budget is spent,
+  // a second pass with three times the budget gives the other tips sites: 0.91%.
+  vtkSmartPointer<vtkPolyData> spikes = SphereWithSpikes(FibonacciDirections(12));
+  RemeshRun run(spikes, 200, 100);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  ExpectTopology(run.Remesh(), 1, 0, 0);
+  vtkPolyData* sites = run.Filter->GetSitesOutput();
+  EXPECT_EQ(sites->GetNumberOfPoints(), 200);
+  EXPECT_GT(Field(sites, "FarPointSites"), 2);
+  EXPECT_LE(Field(sites, "FarPointSites"), 6);
+  EXPECT_LT(Field(run.Remesh(), "RemeshToInputDistance"), 0.01);
+  EXPECT_LT(Field(run.Remesh(), "InputToRemeshDistance"), 0.01);
+  // Independently: the remesh's triangles (each cut in 16) against the input, and back.
+  const double remeshToInput = FarthestTrianglePoint(run.Remesh(), spikes, 4) / spikes->GetLength();
+  const double inputToRemesh = FarthestInputPoint(spikes, run.Remesh());
+  EXPECT_LT(remeshToInput, 0.01);
+  EXPECT_LT(inputToRemesh, 0.01);
+  std::cout << "[ measured ] twelve spikes at 200 sites: " << Field(sites, "FarPointSites")
+            << " sites at far input points; remesh to input " << 100.0 * remeshToInput
+            << "%, input to remesh " << 100.0 * inputToRemesh << "% of the diagonal\n";
 }
 
 TEST(RemeshFilter, FarPointsOnTheBorderHaveSitesOfTheirOwn)
