@@ -235,36 +235,13 @@ std::vector<double> SplitPointsOnLoops(
   return points;
 }
 
-/// Per part of the input: whether the dual has a triangle there (by its first corner's nearest
-/// surface point). A part that cells reach but no triangle (a small piece of a scan beside a
-/// larger one, whose few cells are strips of the larger one's cells that meet two by two) is
-/// lost in the remesh, even where another part split in two keeps the count of parts.
-std::vector<char> PartsWithTriangles(
-  const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input, const cvt::RestrictedDual& dual)
-{
-  std::vector<char> has(static_cast<size_t>(std::max(0, input.Components)), 0);
-  for (const std::array<int, 3>& triangle : dual.Triangles)
-  {
-    const int t = dual.SurfaceTriangles[static_cast<size_t>(triangle[0])];
-    const int c = t < 0
-      ? -1
-      : input.PointComponents[static_cast<size_t>(mesh.Triangles[static_cast<size_t>(t)][0])];
-    if (c >= 0)
-    {
-      has[static_cast<size_t>(c)] = 1;
-    }
-  }
-  return has;
-}
-
 /// Where sites would give each part of the input the cells it needs to be a part of the remesh
 /// at all (cvt::SitesForComponent of genus 0: its genus is the rounds' other business, the cells
 /// that are not disks; a genus-133 cheese at 1000 sites asked for 1100 sites here at once): a
 /// part that fewer cells reach (an optimisation step can carry a site off a small part far from
 /// the others; three cells on a small ball meet at two points only, and the remesh loses it)
 /// gets its points farthest from where those cells meet it (the dual's SurfacePoints) and from
-/// each other, up to that number; a part without a dual triangle (PartsWithTriangles) gets
-/// that number again.
+/// each other, up to that number.
 std::vector<double> SplitPointsOnParts(
   const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input, const cvt::RestrictedDual& dual)
 {
@@ -284,15 +261,11 @@ std::vector<double> SplitPointsOnParts(
       reached[static_cast<size_t>(c)].push_back(&dual.SurfacePoints[3 * v]);
     }
   }
-  // Per component: how many cells it lacks; a part without triangles, all it needs again.
-  const std::vector<char> withTriangles = PartsWithTriangles(mesh, input, dual);
-  std::vector<int> lacking;
+  std::vector<int> lacking; // per component: how many cells it lacks
   for (int c = 0; c < input.Components; ++c)
   {
-    lacking.push_back(withTriangles[static_cast<size_t>(c)]
-        ? std::max(
-            0, cvt::SitesForComponent(0) - static_cast<int>(reached[static_cast<size_t>(c)].size()))
-        : cvt::SitesForComponent(0));
+    lacking.push_back(std::max(
+      0, cvt::SitesForComponent(0) - static_cast<int>(reached[static_cast<size_t>(c)].size())));
   }
   std::vector<double> points;
   if (std::all_of(lacking.begin(), lacking.end(), [](int n) { return n == 0; }))
@@ -513,10 +486,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     }
     splitPoints = std::move(dual.SplitPoints);
     const cvt::MeshTopology topology = ExpectedTopology(dual, mesh, input);
-    const std::vector<char> withTriangles = PartsWithTriangles(mesh, input, dual);
-    const int partsWithout =
-      static_cast<int>(std::count(withTriangles.begin(), withTriangles.end(), 0));
-    if (topology.Components != input.Components || partsWithout > 0)
+    if (topology.Components != input.Components)
     {
       const std::vector<double> onParts = SplitPointsOnParts(mesh, input, dual);
       splitPoints.insert(splitPoints.end(), onParts.begin(), onParts.end());
@@ -528,7 +498,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     }
     bool gain = dual.ThinParts < fewestThinParts;
     fewestThinParts = std::min(fewestThinParts, dual.ThinParts);
-    const int mismatch = TopologyMismatch(topology, input) + partsWithout;
+    const int mismatch = TopologyMismatch(topology, input);
     if (added <= bound && mismatch < bounded.Mismatch)
     {
       bounded.Dual = dual;
