@@ -721,8 +721,11 @@ double SmallestCornerDegrees(const cvt::Remesh& remesh)
 /// valence 6 went down on spool (0.786 -> 0.767) and mannequin-devil (0.858 -> 0.848); 9 more
 /// got the pass and did not change; the others, and all 67 at 5000 sites, stayed byte-identical.
 /// Armadillo with five holes cut came within too (1.02 -> 0.97%), with thirty closer (1.59 ->
-/// 1.16%). The 13 CGAL meshes that get the pass took 33% more time (14.8 -> 19.6 s end to end in
-/// all; mannequin-devil 0.78 -> 1.21 s, spool 0.44 -> 1.08 s), all of them meshes that missed.
+/// 1.16%). The 13 CGAL meshes that get the pass took 35% more time (14.1 -> 19.1 s end to end in
+/// all, builds alternated; mannequin-devil 0.68 -> 1.21 s, spool 0.43 -> 1.11 s), all of them
+/// meshes that missed. Read with float coordinates (STL, OBJ, PLY), only cheese and rotor_small
+/// of the 67 changed (3.19 -> 2.57%, 1.28 -> 1.21%): the pass finds a closer candidate or not
+/// depending on where the first left the sites.
 bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
   const cvt::MeshTopology& input, const std::function<bool()>& aborted, TopologyRefinement& best,
   std::string& error)
