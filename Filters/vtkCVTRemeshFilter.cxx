@@ -650,21 +650,6 @@ void TakeCandidate(FidelityCandidate& candidate, TopologyRefinement& best)
   best.Sites = std::move(candidate.Sites);
 }
 
-/// The smallest corner of `remesh`'s triangles, in degrees.
-double SmallestCornerDegrees(const cvt::Remesh& remesh)
-{
-  const auto point = [&remesh](int v) { return &remesh.Points[3 * static_cast<size_t>(v)]; };
-  double smallest = 180.0;
-  for (const std::array<int, 3>& t : remesh.Triangles)
-  {
-    double angles[3];
-    cvt::CornerAngles(point(t[0]), point(t[1]), point(t[2]), angles);
-    smallest = std::min(
-      smallest, vtkMath::DegreesFromRadians(std::min({ angles[0], angles[1], angles[2] })));
-  }
-  return smallest;
-}
-
 /// Sites added where the remesh and the input lie far apart (MeasureFidelity, farther than
 /// FarInputShare of the diagonal: input points at tips, ears and creases its flat triangles cut
 /// off, and under triangles bridging a fold), so that the remesh gets vertices there: in rounds,
@@ -794,7 +779,10 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
     const size_t limit = border ? borderBudget : budget;
     return std::min(far, limit - std::min(limit, used));
   };
-  double cornerFloor = 0.0; // the smallest corner a candidate may have
+  // The smallest corner a candidate of the second pass may have: the report's measure.
+  const auto smallestCorner = [](const cvt::Remesh& remesh)
+  { return cvt::MeasureMesh(remesh.Points, remesh.Triangles).MinimumAngle; };
+  double cornerFloor = 0.0;
   for (int pass = 0; pass < 2 && !aborted(); ++pass)
   {
     if (pass == 1)
@@ -809,7 +797,7 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
       // Its many sites can crowd a thin wall: regr01.obj of assimp's test models at 1000 sites
       // took 76 of them, 4.15 -> 3.72% of the diagonal, with a corner of 21.8 degrees (26.4
       // before).
-      cornerFloor = std::min(SecondPassCornerDegrees, SmallestCornerDegrees(best.Remesh));
+      cornerFloor = std::min(SecondPassCornerDegrees, smallestCorner(best.Remesh));
     }
     for (int round = 0; round < FidelityRounds && room(false) + room(true) > 0 && !aborted();
          ++round)
@@ -846,7 +834,7 @@ bool RefineForFidelity(cvt::RestrictedVoronoi& engine, cvt::RemeshInput& target,
             break;
           }
           if (candidate.CloserThan(current) && (!found || candidate.CloserThan(closest)) &&
-            (cornerFloor == 0.0 || SmallestCornerDegrees(candidate.Remesh) >= cornerFloor))
+            (pass == 0 || smallestCorner(candidate.Remesh) >= cornerFloor))
           {
             closest = std::move(candidate);
             found = true;
