@@ -39,6 +39,7 @@
 #include <functional>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkCVTRemeshFilter);
@@ -139,12 +140,51 @@ int BudgetedIterations(int maximum, size_t sites, int budget)
   return std::min(maximum, static_cast<int>(std::max<size_t>(MinimumBudgetIterations, share)));
 }
 
-/// How far a remesh's topology is from the input's: 0 when the same.
-int TopologyMismatch(const cvt::MeshTopology& a, const cvt::MeshTopology& b)
+/// Per part of the input (its topology `input`): how many parts of a remesh (`remesh`, with its
+/// InputComponents) lie on it; and in `unplaced`, how many lie on none known.
+std::vector<int> RemeshPartsOn(
+  const cvt::MeshTopology& remesh, const cvt::MeshTopology& input, int& unplaced)
 {
-  return std::abs(a.Components - b.Components) + std::abs(a.Genus - b.Genus) +
-    std::abs(a.BoundaryLoops - b.BoundaryLoops) +
-    std::abs(a.EulerCharacteristic - b.EulerCharacteristic);
+  std::vector<int> partsOn(static_cast<size_t>(input.Components), 0);
+  unplaced = 0;
+  for (int part : remesh.InputComponents)
+  {
+    if (part < 0)
+    {
+      ++unplaced;
+      continue;
+    }
+    ++partsOn[static_cast<size_t>(part)];
+  }
+  return partsOn;
+}
+
+/// How far the parts of a remesh (`remesh`, with its InputComponents) are from those of the
+/// input (its topology `input`): per part of the input, how many more or fewer than one part of
+/// the remesh lie on it. The counts alone can agree where the remesh lost a small part and split
+/// another in two (bull with five holes cut at 1000 sites: its 27-point ring missing, a horn's
+/// tip cut off by a hole, 7.4% of the diagonal from the input). Without InputComponents: how
+/// many more or fewer parts the remesh has.
+int PartMismatch(const cvt::MeshTopology& remesh, const cvt::MeshTopology& input)
+{
+  if (remesh.InputComponents.size() != static_cast<size_t>(remesh.Components))
+  {
+    return std::abs(remesh.Components - input.Components);
+  }
+  int mismatch = 0;
+  for (int n : RemeshPartsOn(remesh, input, mismatch))
+  {
+    mismatch += std::abs(n - 1);
+  }
+  return mismatch;
+}
+
+/// How far a remesh's topology is from the input's: 0 when the same.
+int TopologyMismatch(const cvt::MeshTopology& remesh, const cvt::MeshTopology& input)
+{
+  return PartMismatch(remesh, input) + std::abs(remesh.Genus - input.Genus) +
+    std::abs(remesh.BoundaryLoops - input.BoundaryLoops) +
+    std::abs(remesh.EulerCharacteristic - input.EulerCharacteristic);
 }
 
 /// Where sites would keep the input's holes apart and open, by the nearest sites of the
@@ -235,15 +275,120 @@ std::vector<double> SplitPointsOnLoops(
   return points;
 }
 
+/// Where sites would keep a part of the input in one piece where a hole nearly cuts it (a
+/// horn's tip joined to the head by a strip between two stretches of one hole's rim narrower
+/// than the cells: the cells on it lie in a row, none meeting three at a point, and the remesh
+/// is in pieces there), by the nearest sites of the input's points (`labels`) and the part of
+/// the remesh each site's vertex lies in (`siteParts`): on a loop of a part of the input in
+/// pieces (`partsOn`) whose cells reach two pieces, a cell that reaches the loop at two
+/// stretches lying farther apart along it than twice their distance (a strip, not a ragged rim)
+/// gets a point on each, its point there nearest to the other.
+std::vector<double> SplitPointsAcrossStrips(const cvt::SurfaceMesh& mesh,
+  const cvt::MeshTopology& input, const std::vector<int>& labels, const std::vector<int>& siteParts,
+  const std::vector<int>& partsOn)
+{
+  std::vector<double> points;
+  const auto pieceOf = [&](int point)
+  {
+    const int site = labels[static_cast<size_t>(point)];
+    return site >= 0 && static_cast<size_t>(site) < siteParts.size()
+      ? siteParts[static_cast<size_t>(site)]
+      : -1;
+  };
+  for (const std::vector<int>& loop : input.Loops)
+  {
+    const int part = input.PointComponents[static_cast<size_t>(loop[0])];
+    if (part < 0 || partsOn[static_cast<size_t>(part)] < 2)
+    {
+      continue;
+    }
+    std::set<int> pieces;
+    for (int p : loop)
+    {
+      if (pieceOf(p) >= 0)
+      {
+        pieces.insert(pieceOf(p));
+      }
+    }
+    if (pieces.size() < 2)
+    {
+      continue;
+    }
+    const size_t n = loop.size();
+    // The loop's stretches of one cell each: (cell, first, past the last, modulo n), the last
+    // joined to the first where they are one.
+    std::vector<std::array<size_t, 3>> stretches;
+    for (size_t i = 0; i < n; ++i)
+    {
+      const size_t cell = static_cast<size_t>(labels[static_cast<size_t>(loop[i])]);
+      if (stretches.empty() || stretches.back()[0] != cell)
+      {
+        stretches.push_back({ cell, i, (i + 1) % n });
+      }
+      else
+      {
+        stretches.back()[2] = (i + 1) % n;
+      }
+    }
+    if (stretches.size() > 1 && stretches.front()[0] == stretches.back()[0])
+    {
+      stretches.front()[1] = stretches.back()[1];
+      stretches.pop_back();
+    }
+    if (stretches.size() < 3)
+    {
+      continue;
+    }
+    const std::vector<double> along = cvt::LoopLengths(mesh.Points, loop);
+    const double length = along.back();
+    std::sort(stretches.begin(), stretches.end());
+    for (size_t a = 0; a < stretches.size(); ++a)
+    {
+      for (size_t b = a + 1; b < stretches.size() && stretches[b][0] == stretches[a][0]; ++b)
+      {
+        // The two stretches' nearest points, and how far apart along the loop they lie.
+        size_t nearestA = 0, nearestB = 0;
+        double gap = std::numeric_limits<double>::max();
+        for (size_t i = stretches[a][1]; i != stretches[a][2]; i = (i + 1) % n)
+        {
+          for (size_t j = stretches[b][1]; j != stretches[b][2]; j = (j + 1) % n)
+          {
+            const double d =
+              vtkMath::Distance2BetweenPoints(mesh.Point(loop[i]), mesh.Point(loop[j]));
+            if (d < gap)
+            {
+              gap = d;
+              nearestA = i;
+              nearestB = j;
+            }
+          }
+        }
+        const double apart = std::abs(along[nearestA] - along[nearestB]);
+        if (std::min(apart, length - apart) > 2.0 * std::sqrt(gap))
+        {
+          for (size_t i : { nearestA, nearestB })
+          {
+            points.insert(points.end(), mesh.Point(loop[i]), mesh.Point(loop[i]) + 3);
+          }
+        }
+      }
+    }
+  }
+  return points;
+}
+
 /// Where sites would give each part of the input the cells it needs to be a part of the remesh
 /// at all (cvt::SitesForComponent of genus 0: its genus is the rounds' other business, the cells
 /// that are not disks; a genus-133 cheese at 1000 sites asked for 1100 sites here at once): a
 /// part that fewer cells reach (an optimisation step can carry a site off a small part far from
 /// the others; three cells on a small ball meet at two points only, and the remesh loses it)
 /// gets its points farthest from where those cells meet it (the dual's SurfacePoints) and from
-/// each other, up to that number.
-std::vector<double> SplitPointsOnParts(
-  const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input, const cvt::RestrictedDual& dual)
+/// each other, up to that number. A part that no part of the remesh (`remesh`, its topology)
+/// lies on, however many cells reach it, gets as many points again as cells reach it: cells
+/// that cut a narrow ring into sectors meet in pairs, never three at a point, and make no dual
+/// triangle there (bull with five holes cut, its nose ring at 1000 sites: five cells, no remesh).
+std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input,
+  const cvt::RestrictedDual& dual, const cvt::MeshTopology& remesh)
 {
   const auto componentOf = [&](int triangle)
   {
@@ -261,11 +406,14 @@ std::vector<double> SplitPointsOnParts(
       reached[static_cast<size_t>(c)].push_back(&dual.SurfacePoints[3 * v]);
     }
   }
+  int unplaced = 0;
+  const std::vector<int> remeshPartsOn = RemeshPartsOn(remesh, input, unplaced);
   std::vector<int> lacking; // per component: how many cells it lacks
   for (int c = 0; c < input.Components; ++c)
   {
-    lacking.push_back(std::max(
-      0, cvt::SitesForComponent(0) - static_cast<int>(reached[static_cast<size_t>(c)].size())));
+    const int cells = static_cast<int>(reached[static_cast<size_t>(c)].size());
+    const bool lost = remeshPartsOn[static_cast<size_t>(c)] == 0;
+    lacking.push_back(std::max(0, std::max(cvt::SitesForComponent(0) - cells, lost ? cells : 0)));
   }
   std::vector<double> points;
   if (std::all_of(lacking.begin(), lacking.end(), [](int n) { return n == 0; }))
@@ -337,7 +485,7 @@ cvt::Remesh ShapedRemesh(const cvt::RestrictedDual& dual, const cvt::RemeshInput
 {
   cvt::Remesh remesh = cvt::BuildRemesh(dual, input.Loops.size(), 8, target);
   cvt::OpenCoveredHoles(remesh, target.Surface, input.Loops);
-  topology = cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  topology = cvt::RemeshTopologyOf(remesh, &target.Surface, &input);
   return remesh;
 }
 
@@ -351,7 +499,8 @@ cvt::Remesh ShapedRemesh(const cvt::RestrictedDual& dual, const cvt::RemeshInput
 cvt::MeshTopology ExpectedTopology(
   const cvt::RestrictedDual& dual, const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input)
 {
-  const cvt::MeshTopology topology = cvt::RemeshTopology(dual, input.Loops.size());
+  const cvt::MeshTopology topology =
+    cvt::RemeshTopology(dual, input.Loops.size(), 8, &mesh, &input);
   if (topology.BoundaryLoops >= input.BoundaryLoops)
   {
     return topology;
@@ -361,7 +510,7 @@ cvt::MeshTopology ExpectedTopology(
   {
     return topology;
   }
-  return cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  return cvt::RemeshTopologyOf(remesh, &mesh, &input);
 }
 
 /// The spacing of `sites` (flat x, y, z) spread evenly over `surface`: the side of a square of a
@@ -454,9 +603,12 @@ bool SettleUnderCellSizes(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh
 /// (TopologyAddedSitesCeilingPerBound); thin parts alone get rounds while they become fewer.
 /// Returns the remesh with the input's topology and fewest thin parts, else the first of the
 /// closest topology (with at most MissedTopologyAddedSitesPerSite sites added per site where one
-/// is), in `best`; false (and `error`) when the engine fails. While the remesh has other boundary
-/// loops than the input, the rounds also add sites that keep holes apart and open
-/// (SplitPointsOnLoops).
+/// is), in `best`; false (and `error`) when the engine fails. The topology is judged part by part
+/// (TopologyMismatch: one part of the remesh on each part of the input); a part of the input
+/// with none gets sites (SplitPointsOnParts), and while the remesh has other boundary loops than
+/// the input or a part in pieces, the rounds also add sites that keep holes apart and open
+/// (SplitPointsOnLoops) and, for a part in pieces, strips between two stretches of one hole's
+/// rim whole (SplitPointsAcrossStrips).
 bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& target,
   const cvt::MeshTopology& input, const std::vector<double>& sites,
   const std::function<bool()>& aborted, TopologyRefinement& best, std::string& error)
@@ -486,12 +638,24 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     }
     splitPoints = std::move(dual.SplitPoints);
     const cvt::MeshTopology topology = ExpectedTopology(dual, mesh, input);
-    if (topology.Components != input.Components)
+    if (PartMismatch(topology, input) != 0)
     {
-      const std::vector<double> onParts = SplitPointsOnParts(mesh, input, dual);
+      const std::vector<double> onParts = SplitPointsOnParts(mesh, input, dual, topology);
       splitPoints.insert(splitPoints.end(), onParts.begin(), onParts.end());
     }
-    if (topology.BoundaryLoops != input.BoundaryLoops)
+    // A part in pieces where a strip between two holes, or between two stretches of one hole's
+    // rim, is narrower than the cells, however many loops the pieces have (a ring cut into two
+    // pieces of one loop each has its two).
+    int unplaced = 0;
+    const std::vector<int> partsOn = RemeshPartsOn(topology, input, unplaced);
+    const bool inPieces = std::any_of(partsOn.begin(), partsOn.end(), [](int n) { return n > 1; });
+    if (inPieces)
+    {
+      const std::vector<double> acrossStrips = SplitPointsAcrossStrips(mesh, input,
+        engine.GetPointLabels(), cvt::RemeshSiteParts(dual, input.Loops.size()), partsOn);
+      splitPoints.insert(splitPoints.end(), acrossStrips.begin(), acrossStrips.end());
+    }
+    if (topology.BoundaryLoops != input.BoundaryLoops || inPieces)
     {
       const std::vector<double> onLoops = SplitPointsOnLoops(mesh, input, engine.GetPointLabels());
       splitPoints.insert(splitPoints.end(), onLoops.begin(), onLoops.end());
@@ -1687,10 +1851,21 @@ bool vtkCVTRemeshFilter::Compute(
     remeshOut->GetFieldData(), "RemeshToInputDistance", best.Fidelity.RemeshToInput);
   if (best.Mismatch != 0)
   {
+    // Which parts of the input differ (the counts alone can agree).
+    int unplaced = 0;
+    const std::vector<int> partsOn = RemeshPartsOn(remeshTopology, inputTopology, unplaced);
+    const auto missing = std::count(partsOn.begin(), partsOn.end(), 0);
+    const auto split = std::count_if(partsOn.begin(), partsOn.end(), [](int n) { return n > 1; });
+    std::ostringstream parts;
+    if (missing + split > 0)
+    {
+      parts << "; of the input's parts, " << missing << " without a part of the remesh and "
+            << split << " in pieces";
+    }
     vtkWarningMacro("The remesh's topology differs from the input's ("
       << remeshTopology.Components << " parts, genus " << remeshTopology.Genus << ", "
       << remeshTopology.BoundaryLoops << " boundary loops against " << inputTopology.Components
-      << ", " << inputTopology.Genus << ", " << inputTopology.BoundaryLoops
+      << ", " << inputTopology.Genus << ", " << inputTopology.BoundaryLoops << parts.str()
       << "): too few sites for the thinnest parts; use more sites.");
   }
   cvtvtk::FillHistoryTable(historyOut, result.History);

@@ -3416,12 +3416,79 @@ RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, d
   return fidelity;
 }
 
-MeshTopology RemeshTopology(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
+MeshTopology RemeshTopologyOf(
+  const Remesh& remesh, const SurfaceMesh* input, const MeshTopology* inputTopology)
+{
+  MeshTopology topology =
+    ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  if (!input || !inputTopology)
+  {
+    return topology;
+  }
+  // Votes of the vertices, per (component here, component of the input).
+  std::map<std::pair<int, int>, int> votes;
+  for (size_t v = 0; v < topology.PointComponents.size(); ++v)
+  {
+    const int part = topology.PointComponents[v];
+    const int source = remesh.SourceTriangles[v];
+    if (part >= 0 && source >= 0)
+    {
+      const int under =
+        inputTopology
+          ->PointComponents[static_cast<size_t>(input->Triangles[static_cast<size_t>(source)][0])];
+      ++votes[{ part, under }];
+    }
+  }
+  topology.InputComponents.assign(static_cast<size_t>(topology.Components), -1);
+  std::vector<int> most(static_cast<size_t>(topology.Components), 0);
+  for (const auto& [key, count] : votes)
+  {
+    if (count > most[static_cast<size_t>(key.first)])
+    {
+      most[static_cast<size_t>(key.first)] = count;
+      topology.InputComponents[static_cast<size_t>(key.first)] = key.second;
+    }
+  }
+  return topology;
+}
+
+namespace
+{
+/// BuildRemesh's remesh of `dual` unshaped: its triangles and split vertices (the shaping keeps
+/// the topology).
+Remesh UnshapedRemesh(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
 {
   std::vector<int> dualOf;
   Remesh remesh = ConnectRemesh(dual, inputBoundaryLoops, maximumHole, dualOf);
   SplitPinchedVertices(remesh);
-  return ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles);
+  return remesh;
+}
+} // namespace
+
+MeshTopology RemeshTopology(const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole,
+  const SurfaceMesh* input, const MeshTopology* inputTopology)
+{
+  return RemeshTopologyOf(
+    UnshapedRemesh(dual, inputBoundaryLoops, maximumHole), input, inputTopology);
+}
+
+std::vector<int> RemeshSiteParts(
+  const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole)
+{
+  const Remesh remesh = UnshapedRemesh(dual, inputBoundaryLoops, maximumHole);
+  const MeshTopology topology = RemeshTopologyOf(remesh);
+  const int sites =
+    dual.Sites.empty() ? 0 : *std::max_element(dual.Sites.begin(), dual.Sites.end()) + 1;
+  std::vector<int> parts(static_cast<size_t>(sites), -1);
+  for (size_t v = 0; v < remesh.SiteIds.size(); ++v)
+  {
+    int& part = parts[static_cast<size_t>(remesh.SiteIds[v])];
+    if (part < 0)
+    {
+      part = topology.PointComponents[v];
+    }
+  }
+  return parts;
 }
 
 } // namespace cvt

@@ -181,10 +181,23 @@ CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(const Remesh& remesh, const Re
   double share, size_t maximumPoints, size_t maximumBorderPoints, const Remesh* before = nullptr,
   const RemeshFidelity* measuredBefore = nullptr);
 
+/// The topology of `remesh`, and given its `input` mesh and that mesh's topology, the part of
+/// the input under each of its parts (MeshTopology::InputComponents, by its vertices'
+/// SourceTriangles: most of them, since a vertex fitted to the input near another part may have
+/// its source there).
+CVTNUMERICS_EXPORT MeshTopology RemeshTopologyOf(const Remesh& remesh,
+  const SurfaceMesh* input = nullptr, const MeshTopology* inputTopology = nullptr);
+
 /// The topology of BuildRemesh's remesh of `dual` without building it whole: its triangles and
 /// split vertices without the shaping (flips, moves and collapses keep the topology). For
-/// choosing among many duals the one to build.
-CVTNUMERICS_EXPORT MeshTopology RemeshTopology(
+/// choosing among many duals the one to build. With the input, as RemeshTopologyOf.
+CVTNUMERICS_EXPORT MeshTopology RemeshTopology(const RestrictedDual& dual,
+  size_t inputBoundaryLoops, int maximumHole = 8, const SurfaceMesh* input = nullptr,
+  const MeshTopology* inputTopology = nullptr);
+
+/// Per site of `dual` (up to the largest in it): the part of RemeshTopology's remesh that its
+/// vertex lies in (-1: none).
+CVTNUMERICS_EXPORT std::vector<int> RemeshSiteParts(
   const RestrictedDual& dual, size_t inputBoundaryLoops, int maximumHole = 8);
 
 } // namespace cvt

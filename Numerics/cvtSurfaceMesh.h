@@ -90,6 +90,9 @@ struct MeshTopology
   std::vector<std::vector<int>> Loops;
   std::vector<int> PointComponents; // the component of each point (-1: in no triangle)
   std::vector<int> ComponentGenus;  // per component
+  /// A remesh's only (RemeshTopologyOf): per component, the component of the input under most
+  /// of its vertices (-1: none known).
+  std::vector<int> InputComponents;
 };
 
 /// Splits directed edges (a, b) that form closed chains into simple loops of points: at a point

@@ -23,6 +23,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkStaticCleanPolyData.h"
@@ -41,6 +42,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <vector>
 
@@ -765,18 +767,14 @@ TEST(RemeshFilter, ThinTailIsKeptWhereTheInputHasAHoleFarSmallerThanTheCells)
   EXPECT_GT(bounds[1], tip - 0.2) << "the tail's tip is at x = " << tip;
 }
 
-TEST(RemeshFilter, HolesCloserThanTheCellsStayApartWithAddedSites)
+/// A unit-diameter sphere (120 x 120 facets) without the facets whose centroids `cut` takes.
+vtkSmartPointer<vtkPolyData> CutSphere(const std::function<bool(const double*)>& cut)
 {
-  // A unit-diameter sphere with two round holes (radius 0.1) whose rims come within 0.06 of
-  // each other, remeshed with 150 sites (cells about 0.15 across): the cells round the strip
-  // between the holes reach both rims, and their dual makes one hole of the two. Sites are
-  // added on either side of the strip until each hole has its own border.
   vtkNew<vtkSphereSource> source;
   source->SetThetaResolution(120);
   source->SetPhiResolution(120);
   source->Update();
   vtkPolyData* sphere = source->GetOutput();
-  const double centres[2][3] = { { 0.5, 0.13, 0.0 }, { 0.5, -0.13, 0.0 } };
   vtkNew<vtkCellArray> kept;
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < sphere->GetNumberOfPolys(); ++c)
@@ -792,25 +790,104 @@ TEST(RemeshFilter, HolesCloserThanTheCellsStayApartWithAddedSites)
         centroid[d] += x[d] / ids->GetNumberOfIds();
       }
     }
-    const auto outside = [&centroid](const double* centre)
-    {
-      const double along = 0.5 / std::sqrt(centre[0] * centre[0] + centre[1] * centre[1]);
-      const double d[3] = { centroid[0] - along * centre[0], centroid[1] - along * centre[1],
-        centroid[2] };
-      return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > 0.1 * 0.1;
-    };
-    if (outside(centres[0]) && outside(centres[1]))
+    if (!cut(centroid))
     {
       kept->InsertNextCell(ids);
     }
   }
-  vtkNew<vtkPolyData> input;
+  auto input = vtkSmartPointer<vtkPolyData>::New();
   input->SetPoints(sphere->GetPoints());
   input->SetPolys(kept);
-  RemeshRun run(input, 150, 60);
+  return input;
+}
+
+TEST(RemeshFilter, HolesCloserThanTheCellsStayApartWithAddedSites)
+{
+  // A unit-diameter sphere with two round holes (radius 0.1) whose rims come within 0.06 of
+  // each other, remeshed with 150 sites (cells about 0.15 across): the cells round the strip
+  // between the holes reach both rims, and their dual makes one hole of the two. Sites are
+  // added on either side of the strip until each hole has its own border.
+  const double centres[2][3] = { { 0.5, 0.13, 0.0 }, { 0.5, -0.13, 0.0 } };
+  const auto inHole = [&centres](const double* centroid)
+  {
+    for (const double* centre : centres)
+    {
+      const double along = 0.5 / std::sqrt(centre[0] * centre[0] + centre[1] * centre[1]);
+      const double d[3] = { centroid[0] - along * centre[0], centroid[1] - along * centre[1],
+        centroid[2] };
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= 0.1 * 0.1)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  RemeshRun run(CutSphere(inHole), 150, 60);
   ASSERT_TRUE(run.Status) << run.Log->Errors;
   ExpectTopology(run.Remesh(), 1, 0, 2);
   EXPECT_GT(Field(run.Filter->GetSitesOutput(), "AddedSites"), 0);
+}
+
+TEST(RemeshFilter, PartNearlyCutInTwoByAHoleStaysWhole)
+{
+  // A unit-diameter sphere without a band 0.24 wide round its equator but for a strip 0.05
+  // wide across it: one part with one boundary loop. At 100 and 200 sites (cells about 0.18 and
+  // 0.13 across) the cells on the strip reach its rim on both sides, in a row along it, none
+  // meeting three at a point, and the remesh fell apart into the two halves (2.5% and 4.6% of
+  // the diagonal from the strip). Where a part is in pieces, sites are added on either side of
+  // such a strip (a cell that reaches one rim at two stretches far apart along it, on a loop
+  // whose cells reach two pieces) until the halves stay joined.
+  const auto band = [](const double* centroid)
+  { return std::abs(centroid[2]) < 0.12 && !(centroid[0] > 0.0 && std::abs(centroid[1]) < 0.02); };
+  const vtkSmartPointer<vtkPolyData> input = CutSphere(band);
+  for (int sites : { 100, 200 })
+  {
+    SCOPED_TRACE(std::to_string(sites) + " sites");
+    RemeshRun run(input, sites, 60);
+    ASSERT_TRUE(run.Status) << run.Log->Errors;
+    ExpectTopology(run.Remesh(), 1, 0, 1);
+    EXPECT_EQ(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
+    EXPECT_GT(Field(run.Filter->GetSitesOutput(), "AddedSites"), 0);
+  }
+}
+
+TEST(RemeshFilter, NarrowRingBesideASphereKeepsItsPlaceInTheRemesh)
+{
+  // A unit-diameter sphere and a flat ring 0.02 wide (radii 0.1 and 0.12) centred 0.8 from it,
+  // at 100 and 200 sites (cells about 0.2 and 0.14 across). The ring's cells are sectors that
+  // meet in pairs, never three at a point: at 100 sites the remesh lost the ring; with more
+  // sites on it, it came in pieces, as many parts as the input by chance. Parts of the input
+  // that no part of the remesh lies on get as many sites again as cells reach them, and a part
+  // in pieces gets sites where a cell reaches both rims, until the ring is one part.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(60);
+  sphere->SetPhiResolution(60);
+  vtkNew<vtkDiskSource> disk;
+  disk->SetInnerRadius(0.1);
+  disk->SetOuterRadius(0.12);
+  disk->SetRadialResolution(2);
+  disk->SetCircumferentialResolution(120);
+  disk->Update();
+  vtkNew<vtkPolyData> ring;
+  ring->DeepCopy(disk->GetOutput());
+  for (vtkIdType p = 0; p < ring->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    ring->GetPoint(p, x);
+    ring->GetPoints()->SetPoint(p, x[0] + 0.8, x[1], x[2]);
+  }
+  vtkNew<vtkAppendPolyData> parts;
+  parts->AddInputConnection(sphere->GetOutputPort());
+  parts->AddInputData(ring);
+  parts->Update();
+  for (int sites : { 100, 200 })
+  {
+    SCOPED_TRACE(std::to_string(sites) + " sites");
+    RemeshRun run(parts->GetOutput(), sites, 60);
+    ASSERT_TRUE(run.Status) << run.Log->Errors;
+    ExpectTopology(run.Remesh(), 2, 0, 2);
+    EXPECT_EQ(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
+  }
 }
 
 TEST(RemeshFilter, HoleFarSmallerThanTheCellsIsOpenedAsOneTriangle)

@@ -964,6 +964,29 @@ TEST(RestrictedVoronoi, RemeshDropsFragmentsButKeepsSmallParts)
   EXPECT_EQ(std::count(remesh.SiteIds.begin(), remesh.SiteIds.end(), 28), 1);
 }
 
+TEST(RestrictedVoronoi, RemeshTellsThePartOfTheInputUnderEachOfItsParts)
+{
+  // Two unit squares side by side (parts 0 and 1 of the input, 8 triangles each), and a remesh
+  // of three pieces: two on part 0 (a part split in two, as the counts alone would not tell
+  // where part 1 has none) and one on part 1 with a vertex whose source lies on part 0 (a vertex
+  // fitted to the input near the other part): most of its vertices decide.
+  const cvt::SurfaceMesh input =
+    cvttest::TwoParts(cvttest::FlatSquare(2, 0.0, 1.0), cvttest::FlatSquare(2, 0.0, 1.0), 1.05);
+  const cvt::MeshTopology inputTopology =
+    cvt::ComputeMeshTopology(input.NumberOfPoints(), input.Triangles);
+  ASSERT_EQ(inputTopology.Components, 2);
+  cvt::Remesh remesh;
+  remesh.Triangles = { { 0, 1, 2 }, { 3, 4, 5 }, { 6, 7, 8 }, { 6, 8, 9 } };
+  remesh.SourceTriangles = { 0, 1, 2, 5, 6, 7, 8, 9, 3, 10 };
+  remesh.SiteIds.resize(remesh.SourceTriangles.size());
+  std::iota(remesh.SiteIds.begin(), remesh.SiteIds.end(), 0);
+  const cvt::MeshTopology topology = cvt::RemeshTopologyOf(remesh, &input, &inputTopology);
+  ASSERT_EQ(topology.Components, 3);
+  EXPECT_EQ(topology.InputComponents, (std::vector<int>{ 0, 0, 1 }));
+  // Without the input, no parts are told.
+  EXPECT_TRUE(cvt::RemeshTopologyOf(remesh).InputComponents.empty());
+}
+
 TEST(RestrictedVoronoi, RemeshFlipsThinTrianglesButNotFeatureEdges)
 {
   // A flat rhombus split along its long diagonal a-b: two triangles of 11.3 degrees, where the
