@@ -3430,7 +3430,7 @@ MeshTopology RemeshTopologyOf(
   for (size_t v = 0; v < topology.PointComponents.size(); ++v)
   {
     const int part = topology.PointComponents[v];
-    const int source = remesh.SourceTriangles[v];
+    const int source = v < remesh.SourceTriangles.size() ? remesh.SourceTriangles[v] : -1;
     if (part >= 0 && source >= 0)
     {
       const int under =

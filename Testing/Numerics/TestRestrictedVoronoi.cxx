@@ -962,6 +962,17 @@ TEST(RestrictedVoronoi, RemeshDropsFragmentsButKeepsSmallParts)
   EXPECT_EQ(remesh.Triangles.size(), 32u + 1u);
   EXPECT_EQ(std::count(remesh.SiteIds.begin(), remesh.SiteIds.end(), 25), 0);
   EXPECT_EQ(std::count(remesh.SiteIds.begin(), remesh.SiteIds.end(), 28), 1);
+  // The part each site's vertex lies in: the grid's, the small part's, none for the fragment's.
+  const std::vector<int> parts = cvt::RemeshSiteParts(dual, 2);
+  ASSERT_EQ(parts.size(), points.size());
+  EXPECT_EQ(parts[12], parts[0]);
+  EXPECT_EQ(parts[24], parts[0]);
+  EXPECT_EQ(parts[28], parts[27]);
+  EXPECT_EQ(parts[29], parts[27]);
+  EXPECT_NE(parts[27], parts[0]);
+  EXPECT_GE(parts[0], 0);
+  EXPECT_GE(parts[27], 0);
+  EXPECT_EQ(parts[25], -1);
 }
 
 TEST(RestrictedVoronoi, RemeshTellsThePartOfTheInputUnderEachOfItsParts)
