@@ -141,20 +141,16 @@ int BudgetedIterations(int maximum, size_t sites, int budget)
 }
 
 /// Per part of the input (its topology `input`): how many parts of a remesh (`remesh`, with its
-/// InputComponents) lie on it; and in `unplaced`, how many lie on none known.
-std::vector<int> RemeshPartsOn(
-  const cvt::MeshTopology& remesh, const cvt::MeshTopology& input, int& unplaced)
+/// InputComponents) lie on it.
+std::vector<int> RemeshPartsOn(const cvt::MeshTopology& remesh, const cvt::MeshTopology& input)
 {
   std::vector<int> partsOn(static_cast<size_t>(input.Components), 0);
-  unplaced = 0;
   for (int part : remesh.InputComponents)
   {
-    if (part < 0)
+    if (part >= 0)
     {
-      ++unplaced;
-      continue;
+      ++partsOn[static_cast<size_t>(part)];
     }
-    ++partsOn[static_cast<size_t>(part)];
   }
   return partsOn;
 }
@@ -163,16 +159,17 @@ std::vector<int> RemeshPartsOn(
 /// input (its topology `input`): per part of the input, how many more or fewer than one part of
 /// the remesh lie on it. The counts alone can agree where the remesh lost a small part and split
 /// another in two (bull with five holes cut at 1000 sites: its 27-point ring missing, a horn's
-/// tip cut off by a hole, 7.4% of the diagonal from the input). Without InputComponents: how
-/// many more or fewer parts the remesh has.
+/// tip cut off by a hole, 7.4% of the diagonal from the input); a part of the remesh on no part
+/// known counts too. Without InputComponents: how many more or fewer parts the remesh has.
 int PartMismatch(const cvt::MeshTopology& remesh, const cvt::MeshTopology& input)
 {
   if (remesh.InputComponents.size() != static_cast<size_t>(remesh.Components))
   {
     return std::abs(remesh.Components - input.Components);
   }
-  int mismatch = 0;
-  for (int n : RemeshPartsOn(remesh, input, mismatch))
+  int mismatch =
+    static_cast<int>(std::count(remesh.InputComponents.begin(), remesh.InputComponents.end(), -1));
+  for (int n : RemeshPartsOn(remesh, input))
   {
     mismatch += std::abs(n - 1);
   }
@@ -305,9 +302,9 @@ std::vector<double> SplitPointsAcrossStrips(const cvt::SurfaceMesh& mesh,
     std::set<int> pieces;
     for (int p : loop)
     {
-      if (pieceOf(p) >= 0)
+      if (const int piece = pieceOf(p); piece >= 0)
       {
-        pieces.insert(pieceOf(p));
+        pieces.insert(piece);
       }
     }
     if (pieces.size() < 2)
@@ -383,12 +380,13 @@ std::vector<double> SplitPointsAcrossStrips(const cvt::SurfaceMesh& mesh,
 /// part that fewer cells reach (an optimisation step can carry a site off a small part far from
 /// the others; three cells on a small ball meet at two points only, and the remesh loses it)
 /// gets its points farthest from where those cells meet it (the dual's SurfacePoints) and from
-/// each other, up to that number. A part that no part of the remesh (`remesh`, its topology)
-/// lies on, however many cells reach it, gets as many points again as cells reach it: cells
-/// that cut a narrow ring into sectors meet in pairs, never three at a point, and make no dual
-/// triangle there (bull with five holes cut, its nose ring at 1000 sites: five cells, no remesh).
+/// each other, up to that number. A part that no part of the remesh lies on (`partsOn`, per part
+/// of the input: RemeshPartsOn), however many cells reach it, gets as many points again as cells
+/// reach it: cells that cut a narrow ring into sectors meet in pairs, never three at a point,
+/// and make no dual triangle there (bull with five holes cut, its nose ring at 1000 sites: five
+/// cells, no remesh).
 std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input,
-  const cvt::RestrictedDual& dual, const cvt::MeshTopology& remesh)
+  const cvt::RestrictedDual& dual, const std::vector<int>& partsOn)
 {
   const auto componentOf = [&](int triangle)
   {
@@ -406,13 +404,11 @@ std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::
       reached[static_cast<size_t>(c)].push_back(&dual.SurfacePoints[3 * v]);
     }
   }
-  int unplaced = 0;
-  const std::vector<int> remeshPartsOn = RemeshPartsOn(remesh, input, unplaced);
   std::vector<int> lacking; // per component: how many cells it lacks
   for (int c = 0; c < input.Components; ++c)
   {
     const int cells = static_cast<int>(reached[static_cast<size_t>(c)].size());
-    const bool lost = remeshPartsOn[static_cast<size_t>(c)] == 0;
+    const bool lost = partsOn[static_cast<size_t>(c)] == 0;
     lacking.push_back(std::max(0, std::max(cvt::SitesForComponent(0) - cells, lost ? cells : 0)));
   }
   std::vector<double> points;
@@ -638,16 +634,15 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     }
     splitPoints = std::move(dual.SplitPoints);
     const cvt::MeshTopology topology = ExpectedTopology(dual, mesh, input);
+    const std::vector<int> partsOn = RemeshPartsOn(topology, input);
     if (PartMismatch(topology, input) != 0)
     {
-      const std::vector<double> onParts = SplitPointsOnParts(mesh, input, dual, topology);
+      const std::vector<double> onParts = SplitPointsOnParts(mesh, input, dual, partsOn);
       splitPoints.insert(splitPoints.end(), onParts.begin(), onParts.end());
     }
     // A part in pieces where a strip between two holes, or between two stretches of one hole's
     // rim, is narrower than the cells, however many loops the pieces have (a ring cut into two
     // pieces of one loop each has its two).
-    int unplaced = 0;
-    const std::vector<int> partsOn = RemeshPartsOn(topology, input, unplaced);
     const bool inPieces = std::any_of(partsOn.begin(), partsOn.end(), [](int n) { return n > 1; });
     if (inPieces)
     {
@@ -1852,8 +1847,7 @@ bool vtkCVTRemeshFilter::Compute(
   if (best.Mismatch != 0)
   {
     // Which parts of the input differ (the counts alone can agree).
-    int unplaced = 0;
-    const std::vector<int> partsOn = RemeshPartsOn(remeshTopology, inputTopology, unplaced);
+    const std::vector<int> partsOn = RemeshPartsOn(remeshTopology, inputTopology);
     const auto missing = std::count(partsOn.begin(), partsOn.end(), 0);
     const auto split = std::count_if(partsOn.begin(), partsOn.end(), [](int n) { return n > 1; });
     std::ostringstream parts;
