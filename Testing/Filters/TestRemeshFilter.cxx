@@ -851,20 +851,16 @@ TEST(RemeshFilter, PartNearlyCutInTwoByAHoleStaysWhole)
   }
 }
 
-TEST(RemeshFilter, NarrowRingBesideASphereKeepsItsPlaceInTheRemesh)
+/// A unit-diameter sphere and, `offset` from its centre along x, a flat ring of radii `inner`
+/// and `outer` in the sphere's equatorial plane.
+vtkSmartPointer<vtkPolyData> SphereAndRing(double inner, double outer, double offset)
 {
-  // A unit-diameter sphere and a flat ring 0.02 wide (radii 0.1 and 0.12) centred 0.8 from it,
-  // at 100 and 200 sites (cells about 0.2 and 0.14 across). The ring's cells are sectors that
-  // meet in pairs, never three at a point: at 100 sites the remesh lost the ring; with more
-  // sites on it, it came in pieces, as many parts as the input by chance. Parts of the input
-  // that no part of the remesh lies on get as many sites again as cells reach them, and a part
-  // in pieces gets sites where a cell reaches both rims, until the ring is one part.
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(60);
   sphere->SetPhiResolution(60);
   vtkNew<vtkDiskSource> disk;
-  disk->SetInnerRadius(0.1);
-  disk->SetOuterRadius(0.12);
+  disk->SetInnerRadius(inner);
+  disk->SetOuterRadius(outer);
   disk->SetRadialResolution(2);
   disk->SetCircumferentialResolution(120);
   disk->Update();
@@ -874,20 +870,48 @@ TEST(RemeshFilter, NarrowRingBesideASphereKeepsItsPlaceInTheRemesh)
   {
     double x[3];
     ring->GetPoint(p, x);
-    ring->GetPoints()->SetPoint(p, x[0] + 0.8, x[1], x[2]);
+    ring->GetPoints()->SetPoint(p, x[0] + offset, x[1], x[2]);
   }
   vtkNew<vtkAppendPolyData> parts;
   parts->AddInputConnection(sphere->GetOutputPort());
   parts->AddInputData(ring);
   parts->Update();
+  return parts->GetOutput();
+}
+
+TEST(RemeshFilter, NarrowRingBesideASphereKeepsItsPlaceInTheRemesh)
+{
+  // A flat ring 0.02 wide (radii 0.1 and 0.12) centred 0.8 from the sphere's, at 100 and 200
+  // sites (cells about 0.2 and 0.14 across). The ring's cells are sectors that meet in pairs,
+  // never three at a point: at 100 sites the remesh lost the ring; with more sites on it, it
+  // came in pieces, as many parts as the input by chance. Parts of the input that no part of the
+  // remesh lies on get as many sites again as cells reach them, and a part in pieces gets sites
+  // where a cell reaches both rims, until the ring is one part.
+  vtkSmartPointer<vtkPolyData> parts = SphereAndRing(0.1, 0.12, 0.8);
   for (int sites : { 100, 200 })
   {
     SCOPED_TRACE(std::to_string(sites) + " sites");
-    RemeshRun run(parts->GetOutput(), sites, 60);
+    RemeshRun run(parts, sites, 60);
     ASSERT_TRUE(run.Status) << run.Log->Errors;
     ExpectTopology(run.Remesh(), 2, 0, 2);
     EXPECT_EQ(run.Log->Warnings.find("topology differs"), std::string::npos) << run.Log->Warnings;
   }
+}
+
+TEST(RemeshFilter, RingLostCountsForMoreThanARingInPieces)
+{
+  // A longer ring, 0.04 wide (radii 0.3 and 0.34) centred 1.6 from the sphere's, at 400 sites
+  // (cells about 0.1 across): the sites the rounds add first leave it in pieces, a remesh no
+  // closer by the counts (one part and two loops short, against one part and two disks too
+  // many) than the first one, which lost the ring, and the rounds kept that one: half the
+  // diagonal from the input. A part of the input without a part of the remesh counts as two,
+  // so the rounds go on from the pieces; the ring comes back, its hole closed (a cut ring),
+  // within 1% of the diagonal from the input.
+  vtkSmartPointer<vtkPolyData> parts = SphereAndRing(0.3, 0.34, 1.6);
+  RemeshRun run(parts, 400, 100);
+  ASSERT_TRUE(run.Status) << run.Log->Errors;
+  EXPECT_EQ(Field(run.Remesh(), "Components"), 2);
+  EXPECT_LT(FarthestInputPoint(parts, run.Remesh()), 0.01);
 }
 
 TEST(RemeshFilter, HoleFarSmallerThanTheCellsIsOpenedAsOneTriangle)
