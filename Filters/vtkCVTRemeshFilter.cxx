@@ -155,21 +155,12 @@ std::vector<int> RemeshPartsOn(const cvt::MeshTopology& remesh, const cvt::MeshT
   return partsOn;
 }
 
-/// What a part of the input with no part of the remesh adds to PartMismatch: its loss (the whole
-/// part) is worse than pieces, which the rounds can join, yet counted as one, a ring lost (a part
-/// and its two loops) was as far as the ring in two disks (a part, and an Euler characteristic
-/// two more), and the rounds kept the remesh without the ring: a ring 0.04 wide beside a sphere
-/// at 400 sites, half the diagonal from the input (0.54% counted as two, seed 1). The CGAL meshes
-/// at 1000 sites (double and float coordinates, and 10 with holes cut) keep their remeshes.
-constexpr int LostPartMismatch = 2;
-
 /// How far the parts of a remesh (`remesh`, with its InputComponents) are from those of the
 /// input (its topology `input`): per part of the input, how many more or fewer than one part of
 /// the remesh lie on it. The counts alone can agree where the remesh lost a small part and split
 /// another in two (bull with five holes cut at 1000 sites: its 27-point ring missing, a horn's
 /// tip cut off by a hole, 7.4% of the diagonal from the input); a part of the remesh on no part
-/// known counts too. A part of the input with no part of the remesh counts as LostPartMismatch.
-/// Without InputComponents: how many more or fewer parts the remesh has.
+/// known counts too. Without InputComponents: how many more or fewer parts the remesh has.
 int PartMismatch(const cvt::MeshTopology& remesh, const cvt::MeshTopology& input)
 {
   if (remesh.InputComponents.size() != static_cast<size_t>(remesh.Components))
@@ -180,7 +171,7 @@ int PartMismatch(const cvt::MeshTopology& remesh, const cvt::MeshTopology& input
     static_cast<int>(std::count(remesh.InputComponents.begin(), remesh.InputComponents.end(), -1));
   for (int n : RemeshPartsOn(remesh, input))
   {
-    mismatch += n == 0 ? LostPartMismatch : std::abs(n - 1);
+    mismatch += std::abs(n - 1);
   }
   return mismatch;
 }
@@ -193,13 +184,35 @@ int TopologyMismatch(const cvt::MeshTopology& remesh, const cvt::MeshTopology& i
     std::abs(remesh.EulerCharacteristic - input.EulerCharacteristic);
 }
 
+/// `count` points along loop `loop` of `mesh`, as far apart along it.
+void PointsAlongLoop(const cvt::SurfaceMesh& mesh, const std::vector<int>& loop, int count,
+  std::vector<double>& points)
+{
+  const std::vector<double> along = cvt::LoopLengths(mesh.Points, loop);
+  for (int k = 0; k < count; ++k)
+  {
+    const double at = along.back() * k / count;
+    const size_t i = std::upper_bound(along.begin(), along.end(), at) - along.begin() - 1;
+    const double* a = mesh.Point(loop[i]);
+    const double* b = mesh.Point(loop[(i + 1) % loop.size()]);
+    const double length = along[i + 1] - along[i];
+    const double t = length > 0.0 ? (at - along[i]) / length : 0.0;
+    for (int j = 0; j < 3; ++j)
+    {
+      points.push_back(a[j] + t * (b[j] - a[j]));
+    }
+  }
+}
+
 /// Where sites would keep the input's holes apart and open, by the nearest sites of the
 /// input's points (`labels`): a cell that reaches two boundary loops (a strip between holes
 /// narrower than the cells) gets a point on each, its point there nearest to the other loops, so
 /// that each side of the strip gets its own cell; a loop that fewer than three cells reach (the
 /// dual closes a hole only one or two cells border) gets three points a third of its length apart.
-std::vector<double> SplitPointsOnLoops(
-  const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input, const std::vector<int>& labels)
+/// The loops of a part of the input that no part of the remesh lies on (`partsOn`) are left to
+/// SplitPointsOnParts, which samples them along: points here too crowd them into pieces.
+std::vector<double> SplitPointsOnLoops(const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input,
+  const std::vector<int>& labels, const std::vector<int>& partsOn)
 {
   std::vector<double> points;
   // (cell, loop, point) of every loop point, to find the cells that reach several loops.
@@ -207,6 +220,10 @@ std::vector<double> SplitPointsOnLoops(
   for (size_t l = 0; l < input.Loops.size(); ++l)
   {
     const std::vector<int>& loop = input.Loops[l];
+    if (partsOn[static_cast<size_t>(input.PointComponents[static_cast<size_t>(loop[0])])] == 0)
+    {
+      continue; // a lost part's rims: SplitPointsOnParts
+    }
     std::vector<int> cells;
     for (int p : loop)
     {
@@ -218,20 +235,7 @@ std::vector<double> SplitPointsOnLoops(
     {
       continue;
     }
-    const std::vector<double> along = cvt::LoopLengths(mesh.Points, loop);
-    for (int third = 0; third < 3; ++third)
-    {
-      const double at = along.back() * third / 3.0;
-      const size_t i = std::upper_bound(along.begin(), along.end(), at) - along.begin() - 1;
-      const double* a = mesh.Point(loop[i]);
-      const double* b = mesh.Point(loop[(i + 1) % loop.size()]);
-      const double length = along[i + 1] - along[i];
-      const double t = length > 0.0 ? (at - along[i]) / length : 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        points.push_back(a[k] + t * (b[k] - a[k]));
-      }
-    }
+    PointsAlongLoop(mesh, loop, 3, points);
   }
   // Each cell's points, loop by loop; on each loop of a cell that reaches several, the point
   // nearest to its points on the others.
@@ -277,6 +281,63 @@ std::vector<double> SplitPointsOnLoops(
       }
     }
     first = last;
+  }
+  return points;
+}
+
+/// Where sites would join the pieces of a part of the input in pieces (`partsOn`): where the
+/// cells of two sites whose vertices lie in different pieces (`siteParts`) meet on it (by the
+/// nearest sites of the input's points, `labels`), the middle of an input edge between them,
+/// once per pair of sites whose cells both reach the input's border. Two cells side by side
+/// across a strip narrower than they are meet along a curve from rim to rim with no third cell:
+/// the gap between two pieces of a ring. (Pieces of a closed part, thin parts the rounds cut
+/// into disks, are left to RestrictedDual::SplitPoints.)
+std::vector<double> SplitPointsBetweenPieces(const cvt::SurfaceMesh& mesh,
+  const cvt::MeshTopology& input, const std::vector<int>& labels, const std::vector<int>& siteParts,
+  const std::vector<int>& partsOn)
+{
+  std::vector<double> points;
+  std::vector<char> onBorder(siteParts.size(), 0); // per site: whether its cell reaches the border
+  for (const std::vector<int>& loop : input.Loops)
+  {
+    for (int p : loop)
+    {
+      const int site = labels[static_cast<size_t>(p)];
+      if (site >= 0 && static_cast<size_t>(site) < onBorder.size())
+      {
+        onBorder[static_cast<size_t>(site)] = 1;
+      }
+    }
+  }
+  const auto pieceOf = [&](int site)
+  {
+    return site >= 0 && static_cast<size_t>(site) < siteParts.size() &&
+        onBorder[static_cast<size_t>(site)]
+      ? siteParts[static_cast<size_t>(site)]
+      : -1;
+  };
+  std::set<std::pair<int, int>> joined;
+  for (const std::array<int, 3>& t : mesh.Triangles)
+  {
+    const int part = input.PointComponents[static_cast<size_t>(t[0])];
+    if (part < 0 || partsOn[static_cast<size_t>(part)] < 2)
+    {
+      continue;
+    }
+    for (size_t k = 0; k < 3; ++k)
+    {
+      const int p = t[k], q = t[(k + 1) % 3];
+      const int a = labels[static_cast<size_t>(p)], b = labels[static_cast<size_t>(q)];
+      if (a == b || pieceOf(a) < 0 || pieceOf(b) < 0 || pieceOf(a) == pieceOf(b) ||
+        !joined.emplace(std::min(a, b), std::max(a, b)).second)
+      {
+        continue;
+      }
+      for (int j = 0; j < 3; ++j)
+      {
+        points.push_back(0.5 * (mesh.Point(p)[j] + mesh.Point(q)[j]));
+      }
+    }
   }
   return points;
 }
@@ -393,7 +454,10 @@ std::vector<double> SplitPointsAcrossStrips(const cvt::SurfaceMesh& mesh,
 /// of the input: RemeshPartsOn), however many cells reach it, gets as many points again as cells
 /// reach it: cells that cut a narrow ring into sectors meet in pairs, never three at a point,
 /// and make no dual triangle there (bull with five holes cut, its nose ring at 1000 sites: five
-/// cells, no remesh).
+/// cells, no remesh). Where that part has a border and is narrow (its loops' points, about as far
+/// apart as the part is wide, more than the cells it lacks), its loops get those points instead:
+/// sites in a row along it, however many, never meet three at a point either; sites on both rims
+/// do (a ring 0.03 wide beside a sphere, at 300 to 1000 sites: lost, now whole).
 std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input,
   const cvt::RestrictedDual& dual, const std::vector<int>& partsOn)
 {
@@ -421,6 +485,59 @@ std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::
     lacking.push_back(std::max(0, std::max(cvt::SitesForComponent(0) - cells, lost ? cells : 0)));
   }
   std::vector<double> points;
+  // A lost part with a border: its rims sampled about as far apart as the part is wide (twice
+  // its area over its border's length, at most at each loop point), where that takes more
+  // points than the cells it lacks. Sites on both rims stay apart under the rounds' few Lloyd
+  // iterations.
+  std::vector<double> rimLength(static_cast<size_t>(input.Components), 0.0),
+    area(static_cast<size_t>(input.Components), 0.0);
+  const auto componentOfLoop = [&](const std::vector<int>& loop)
+  { return input.PointComponents[static_cast<size_t>(loop[0])]; };
+  for (const std::vector<int>& loop : input.Loops)
+  {
+    const int c = componentOfLoop(loop);
+    if (c >= 0 && partsOn[static_cast<size_t>(c)] == 0)
+    {
+      rimLength[static_cast<size_t>(c)] += cvt::LoopLengths(mesh.Points, loop).back();
+    }
+  }
+  if (std::any_of(rimLength.begin(), rimLength.end(), [](double l) { return l > 0.0; }))
+  {
+    for (const std::array<int, 3>& t : mesh.Triangles)
+    {
+      const int c = input.PointComponents[static_cast<size_t>(t[0])];
+      if (c >= 0 && rimLength[static_cast<size_t>(c)] > 0.0)
+      {
+        area[static_cast<size_t>(c)] += cvt::TriangleArea(mesh, t);
+      }
+    }
+    for (const std::vector<int>& loop : input.Loops)
+    {
+      const size_t c = static_cast<size_t>(componentOfLoop(loop));
+      if (componentOfLoop(loop) < 0 || !(rimLength[c] > 0.0) || !(area[c] > 0.0))
+      {
+        continue;
+      }
+      const double width = 2.0 * area[c] / rimLength[c];
+      const double length = cvt::LoopLengths(mesh.Points, loop).back();
+      if (rimLength[c] / width <= lacking[c])
+      {
+        continue; // a wide part: the cells it lacks, below
+      }
+      const int count = static_cast<int>(std::min<double>(
+        static_cast<double>(loop.size()), std::max(3.0, std::ceil(length / width))));
+      PointsAlongLoop(mesh, loop, count, points);
+    }
+    for (int c = 0; c < input.Components; ++c)
+    {
+      const size_t i = static_cast<size_t>(c);
+      if (rimLength[i] > 0.0 && area[i] > 0.0 &&
+        rimLength[i] * rimLength[i] / (2.0 * area[i]) > lacking[i])
+      {
+        lacking[i] = 0;
+      }
+    }
+  }
   if (std::all_of(lacking.begin(), lacking.end(), [](int n) { return n == 0; }))
   {
     return points;
@@ -613,7 +730,10 @@ bool SettleUnderCellSizes(cvt::RestrictedVoronoi& engine, const cvt::SurfaceMesh
 /// with none gets sites (SplitPointsOnParts), and while the remesh has other boundary loops than
 /// the input or a part in pieces, the rounds also add sites that keep holes apart and open
 /// (SplitPointsOnLoops) and, for a part in pieces, strips between two stretches of one hole's
-/// rim whole (SplitPointsAcrossStrips).
+/// rim whole (SplitPointsAcrossStrips) and pieces joined where their cells meet by the border
+/// (SplitPointsBetweenPieces). The rounds with TopologyRoundIterations[1] run after a gain, or
+/// while a part of the input has no part of the remesh: the added sites crowded by the first
+/// rounds leave a narrow ring in pieces, which are no closer by the counts than the ring lost.
 bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& target,
   const cvt::MeshTopology& input, const std::vector<double>& sites,
   const std::function<bool()>& aborted, TopologyRefinement& best, std::string& error)
@@ -629,6 +749,8 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
   bool ceilingReached = false;
   // Rounds since the best remesh or the fewest thin parts so far last improved.
   int roundsWithoutGain = 0, fewestThinParts = std::numeric_limits<int>::max();
+  // Whether the best remesh lacks a part of the input.
+  bool bestLacksAPart = false;
   // The remesh of the engine's current sites (`added` of them beyond `sites`) if closer to the
   // input's topology, or with it and fewer thin parts, than the best so far; the sites the
   // dual would add next in `splitPoints`.
@@ -655,13 +777,18 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     const bool inPieces = std::any_of(partsOn.begin(), partsOn.end(), [](int n) { return n > 1; });
     if (inPieces)
     {
-      const std::vector<double> acrossStrips = SplitPointsAcrossStrips(mesh, input,
-        engine.GetPointLabels(), cvt::RemeshSiteParts(dual, input.Loops.size()), partsOn);
+      const std::vector<int> siteParts = cvt::RemeshSiteParts(dual, input.Loops.size());
+      const std::vector<double> acrossStrips =
+        SplitPointsAcrossStrips(mesh, input, engine.GetPointLabels(), siteParts, partsOn);
       splitPoints.insert(splitPoints.end(), acrossStrips.begin(), acrossStrips.end());
+      const std::vector<double> betweenPieces =
+        SplitPointsBetweenPieces(mesh, input, engine.GetPointLabels(), siteParts, partsOn);
+      splitPoints.insert(splitPoints.end(), betweenPieces.begin(), betweenPieces.end());
     }
     if (topology.BoundaryLoops != input.BoundaryLoops || inPieces)
     {
-      const std::vector<double> onLoops = SplitPointsOnLoops(mesh, input, engine.GetPointLabels());
+      const std::vector<double> onLoops =
+        SplitPointsOnLoops(mesh, input, engine.GetPointLabels(), partsOn);
       splitPoints.insert(splitPoints.end(), onLoops.begin(), onLoops.end());
     }
     bool gain = dual.ThinParts < fewestThinParts;
@@ -683,6 +810,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
         best.Mismatch = mismatch;
         best.AddedSites = static_cast<int>(added);
         best.Sites = current;
+        bestLacksAPart = std::find(partsOn.begin(), partsOn.end(), 0) != partsOn.end();
         gain = true;
       }
     }
@@ -713,9 +841,11 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
   const int firstMismatch = best.Mismatch;
   for (int settleIterations : TopologyRoundIterations)
   {
-    // The next count is for added sites that got closer to the topology but stayed crowded.
+    // The next count is for added sites that got closer to the topology but stayed crowded, or
+    // that left a part of the input without a remesh: crowded on a narrow ring, the sites of
+    // the first rounds cut it into pieces that count for more than the ring lost.
     if (settleIterations != TopologyRoundIterations[0] &&
-      (best.Mismatch == 0 || best.Mismatch == firstMismatch))
+      (best.Mismatch == 0 || (best.Mismatch == firstMismatch && !bestLacksAPart)))
     {
       break;
     }

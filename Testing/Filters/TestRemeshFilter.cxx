@@ -898,20 +898,31 @@ TEST(RemeshFilter, NarrowRingBesideASphereKeepsItsPlaceInTheRemesh)
   }
 }
 
-TEST(RemeshFilter, RingLostCountsForMoreThanARingInPieces)
+TEST(RemeshFilter, NarrowRingsOfManyWidthsKeepTheirPlaceAndTheirHole)
 {
-  // A longer ring, 0.04 wide (radii 0.3 and 0.34) centred 1.6 from the sphere's, at 400 sites
-  // (cells about 0.1 across): the sites the rounds add first leave it in pieces, a remesh no
-  // closer by the counts (one part and two loops short, against one part and two disks too
-  // many) than the first one, which lost the ring, and the rounds kept that one: half the
-  // diagonal from the input. A part of the input without a part of the remesh counts as two,
-  // so the rounds go on from the pieces; the ring comes back, its hole closed (a cut ring),
-  // within 1% of the diagonal from the input.
-  vtkSmartPointer<vtkPolyData> parts = SphereAndRing(0.3, 0.34, 1.6);
-  RemeshRun run(parts, 400, 100);
-  ASSERT_TRUE(run.Status) << run.Log->Errors;
-  EXPECT_EQ(Field(run.Remesh(), "Components"), 2);
-  EXPECT_LT(FarthestInputPoint(parts, run.Remesh()), 0.01);
+  // Rings 0.03 to 0.06 wide beside the sphere, at 200 to 1000 sites (cells 0.05 to 0.14
+  // across). Sites in a row along a ring, however many, never meet three at a point: the
+  // remesh lost the ring (half the diagonal from the input) or kept an arc of it (a sixth). A
+  // lost part with a border gets sites along its rims about as far apart as it is wide
+  // (SplitPointsOnParts), the rounds that spread sites more run while a part is still lost, and
+  // pieces of a ring get sites where their cells meet (SplitPointsBetweenPieces).
+  struct Ring
+  {
+    double Inner, Outer, Offset;
+    int Sites;
+  };
+  for (const Ring& ring :
+    { Ring{ 0.2, 0.23, 1.3, 600 }, Ring{ 0.3, 0.34, 1.6, 400 }, Ring{ 0.3, 0.34, 1.6, 800 },
+      Ring{ 0.4, 0.43, 1.6, 300 }, Ring{ 0.4, 0.43, 1.6, 800 }, Ring{ 0.5, 0.56, 1.8, 200 } })
+  {
+    SCOPED_TRACE("radii " + std::to_string(ring.Inner) + " and " + std::to_string(ring.Outer) +
+      ", " + std::to_string(ring.Sites) + " sites");
+    vtkSmartPointer<vtkPolyData> parts = SphereAndRing(ring.Inner, ring.Outer, ring.Offset);
+    RemeshRun run(parts, ring.Sites, 100);
+    ASSERT_TRUE(run.Status) << run.Log->Errors;
+    ExpectTopology(run.Remesh(), 2, 0, 2);
+    EXPECT_LT(FarthestInputPoint(parts, run.Remesh()), 0.01);
+  }
 }
 
 TEST(RemeshFilter, HoleFarSmallerThanTheCellsIsOpenedAsOneTriangle)
