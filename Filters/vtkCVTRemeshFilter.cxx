@@ -192,7 +192,9 @@ void PointsAlongLoop(const cvt::SurfaceMesh& mesh, const std::vector<int>& loop,
   for (int k = 0; k < count; ++k)
   {
     const double at = along.back() * k / count;
-    const size_t i = std::upper_bound(along.begin(), along.end(), at) - along.begin() - 1;
+    // (A loop of no length: its last point.)
+    const size_t i = std::min<size_t>(
+      loop.size() - 1, std::upper_bound(along.begin(), along.end(), at) - along.begin() - 1);
     const double* a = mesh.Point(loop[i]);
     const double* b = mesh.Point(loop[(i + 1) % loop.size()]);
     const double length = along[i + 1] - along[i];
@@ -220,7 +222,8 @@ std::vector<double> SplitPointsOnLoops(const cvt::SurfaceMesh& mesh, const cvt::
   for (size_t l = 0; l < input.Loops.size(); ++l)
   {
     const std::vector<int>& loop = input.Loops[l];
-    if (partsOn[static_cast<size_t>(input.PointComponents[static_cast<size_t>(loop[0])])] == 0)
+    const int part = input.PointComponents[static_cast<size_t>(loop[0])];
+    if (part >= 0 && partsOn[static_cast<size_t>(part)] == 0)
     {
       continue; // a lost part's rims: SplitPointsOnParts
     }
