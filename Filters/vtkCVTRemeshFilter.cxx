@@ -489,9 +489,9 @@ std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::
   }
   std::vector<double> points;
   // A lost part with a border: its rims sampled about as far apart as the part is wide (twice
-  // its area over its border's length, at most at each loop point), where that takes more
-  // points than the cells it lacks. Sites on both rims stay apart under the rounds' few Lloyd
-  // iterations.
+  // its area over its border's length; at most one point per loop point), where that takes
+  // more points than the cells it lacks. Sites on both rims stay apart under the rounds' few
+  // Lloyd iterations.
   std::vector<double> rimLength(static_cast<size_t>(input.Components), 0.0),
     area(static_cast<size_t>(input.Components), 0.0);
   const auto componentOfLoop = [&](const std::vector<int>& loop)
@@ -514,30 +514,26 @@ std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::
         area[static_cast<size_t>(c)] += cvt::TriangleArea(mesh, t);
       }
     }
+    std::vector<double> spacing(static_cast<size_t>(input.Components), 0.0); // 0: not sampled
+    for (size_t c = 0; c < spacing.size(); ++c)
+    {
+      const double width = area[c] > 0.0 ? 2.0 * area[c] / rimLength[c] : 0.0;
+      if (width > 0.0 && rimLength[c] / width > lacking[c])
+      {
+        spacing[c] = width;
+        lacking[c] = 0;
+      }
+    }
     for (const std::vector<int>& loop : input.Loops)
     {
-      const size_t c = static_cast<size_t>(componentOfLoop(loop));
-      if (componentOfLoop(loop) < 0 || !(rimLength[c] > 0.0) || !(area[c] > 0.0))
+      const int c = componentOfLoop(loop);
+      if (c >= 0 && spacing[static_cast<size_t>(c)] > 0.0)
       {
-        continue;
-      }
-      const double width = 2.0 * area[c] / rimLength[c];
-      const double length = cvt::LoopLengths(mesh.Points, loop).back();
-      if (rimLength[c] / width <= lacking[c])
-      {
-        continue; // a wide part: the cells it lacks, below
-      }
-      const int count = static_cast<int>(std::min<double>(
-        static_cast<double>(loop.size()), std::max(3.0, std::ceil(length / width))));
-      PointsAlongLoop(mesh, loop, count, points);
-    }
-    for (int c = 0; c < input.Components; ++c)
-    {
-      const size_t i = static_cast<size_t>(c);
-      if (rimLength[i] > 0.0 && area[i] > 0.0 &&
-        rimLength[i] * rimLength[i] / (2.0 * area[i]) > lacking[i])
-      {
-        lacking[i] = 0;
+        const double length = cvt::LoopLengths(mesh.Points, loop).back();
+        PointsAlongLoop(mesh, loop,
+          static_cast<int>(std::min<double>(static_cast<double>(loop.size()),
+            std::max(3.0, std::ceil(length / spacing[static_cast<size_t>(c)])))),
+          points);
       }
     }
   }
