@@ -365,6 +365,33 @@ double FarthestCentroidAround(const Remesh& remesh, const std::vector<std::vecto
   return projector.FarthestCentroid(corners);
 }
 
+/// How far triangle p0 p1 p2 lies from the input (`projector`) at its points a quarter of an edge
+/// apart (its corners, on the input, left out): between its centroid and edge middles a triangle
+/// can lie over a crease's other side or a notch of the border.
+double FarthestQuarterPoint(
+  const SurfaceProjector& projector, const double* p0, const double* p1, const double* p2)
+{
+  double lift = 0.0;
+  for (int i = 0; i <= 4; ++i)
+  {
+    for (int j = 0; i + j <= 4; ++j)
+    {
+      const int k = 4 - i - j;
+      if (i == 4 || j == 4 || k == 4)
+      {
+        continue; // a corner, on the input
+      }
+      double at[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        at[c] = (i * p0[c] + j * p1[c] + k * p2[c]) / 4.0;
+      }
+      lift = std::max(lift, projector.DistanceTo(at));
+    }
+  }
+  return lift;
+}
+
 /// Moves vertex v along the input surface where that widens the smallest corner of its
 /// triangles (`current`, kept up to date) without turning one over or moving them farther than
 /// `reach` from the input: first to the mean of its neighbours (Laplacian smoothing), then,
@@ -1161,23 +1188,8 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
     for (int t : around[static_cast<size_t>(v)])
     {
       const std::array<int, 3>& tri = remesh.Triangles[static_cast<size_t>(t)];
-      for (int i = 0; i <= 4; ++i)
-      {
-        for (int j = 0; i + j <= 4; ++j)
-        {
-          const int k = 4 - i - j;
-          if (i == 4 || j == 4 || k == 4)
-          {
-            continue; // a corner, on the input
-          }
-          double at[3];
-          for (int c = 0; c < 3; ++c)
-          {
-            at[c] = (i * point(tri[0])[c] + j * point(tri[1])[c] + k * point(tri[2])[c]) / 4.0;
-          }
-          lift = std::max(lift, projector.DistanceTo(at));
-        }
-      }
+      lift = std::max(
+        lift, FarthestQuarterPoint(projector, point(tri[0]), point(tri[1]), point(tri[2])));
     }
     return lift;
   };
@@ -1336,10 +1348,13 @@ int FitToSurface(Remesh& remesh, const std::vector<char>& pinned, const std::vec
 /// from the input and its border edges cut less of the loop off; else the edge is split there
 /// where the two new triangles turn by less than 60 degrees from the one they replace, lie no
 /// farther from the input and keep their corners at FitCorner, if need be with the triangle's
-/// apex, when free, moved along the surface to widen them (WidenAround). Changed edges are looked
-/// at again. The new vertices are pinned, on input points. Then border vertices of triangles
-/// with a corner under 30 degrees (no other pass moves them for their angles: the thin triangles
-/// across a strip narrower than the cells, round a small hole) slide along their loop onto the
+/// apex, when free, moved along the surface to widen them (WidenAround); else, where the point
+/// lies beyond the edge's outer side, the edge gets a triangle of its own out to it (an ear) that
+/// turns as little, lies within half the tolerance of the input (FarthestQuarterPoint), keeps its
+/// corners at FitCorner and overlaps none round its ends. Changed edges are looked at again. The
+/// new vertices are pinned, on input points. Then border vertices of triangles with a corner
+/// under 30 degrees (no other pass moves them for their angles: the thin triangles across a
+/// strip narrower than the cells, round a small hole) slide along their loop onto the
 /// spot between their border neighbours that widens their triangles most, where these keep their
 /// side and their distance from the input and neither border edge cuts more of it off than it
 /// did or than half of `tolerance` (SlidBorderVertices: Wuson.stl at 1000 sites 24.5 -> 25.7
@@ -1636,96 +1651,171 @@ int FollowInputBorder(
       }
       continue;
     }
-    const double* pointC = point(c);
-    double before[3], first[3], second[3];
-    UnitNormal(point(a), point(b), pointC, before);
-    UnitNormal(point(a), m, pointC, first);
-    UnitNormal(m, point(b), pointC, second);
-    if (Dot(before, first) < 0.5 || Dot(before, second) < 0.5 ||
-      input.Projector.FarthestCentroid({ { point(a), m, pointC }, { m, point(b), pointC } }) >
-        std::max(input.Projector.FarthestCentroid({ { point(a), point(b), pointC } }), tolerance))
+    // Else the edge splits at the corner: a m c and m b c, where these turn by less than 60
+    // degrees from a b c, lie no farther from the input and keep their corners (widened by the
+    // apex if need be).
+    const auto split = [&]()
     {
-      continue;
-    }
-    // A corner far from the edge's middle leaves a thin triangle: then the apex c, when free,
-    // may move along the surface to widen its triangles (a sawtooth border's teeth are often
-    // closer to one end of the edge than the cells are wide).
-    const bool wide = SmallestCorner(point(a), m, pointC) >= FitCorner &&
-      SmallestCorner(m, point(b), pointC) >= FitCorner;
-    const bool apexFree = !pinned[static_cast<size_t>(c)] &&
-      !(static_cast<size_t>(c) < onBorder.size() && onBorder[static_cast<size_t>(c)]);
-    if (!wide && !apexFree)
-    {
-      continue;
-    }
-    // The apex's place, kept (pointC is lost when the points grow) to undo a widening.
-    const std::array<double, 3> apexAt{ pointC[0], pointC[1], pointC[2] };
-    const int apexTriangle = remesh.SourceTriangles[static_cast<size_t>(c)];
-    const std::array<double, 3> apexWeights{ remesh.SourceBarycentric[3 * static_cast<size_t>(c)],
-      remesh.SourceBarycentric[3 * static_cast<size_t>(c) + 1],
-      remesh.SourceBarycentric[3 * static_cast<size_t>(c) + 2] };
-    const int n = static_cast<int>(remesh.SiteIds.size());
-    remesh.Points.insert(remesh.Points.end(), m, m + 3);
-    remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
-    remesh.SourceTriangles.push_back(-1);
-    remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), 3, 0.0);
-    setSource(static_cast<size_t>(n), corner);
-    std::array<int, 3> firstTriangle = tri, secondTriangle = tri;
-    firstTriangle[static_cast<size_t>((k + 1) % 3)] = n; // a m c
-    secondTriangle[static_cast<size_t>(k)] = n;          // m b c
-    remesh.Triangles[static_cast<size_t>(t)] = firstTriangle;
-    remesh.Triangles.push_back(secondTriangle);
-    const int added = static_cast<int>(remesh.Triangles.size()) - 1;
-    {
-      auto& aroundB = around[static_cast<size_t>(b)]; // not kept: around grows below
-      aroundB.erase(std::find(aroundB.begin(), aroundB.end(), t));
-      aroundB.push_back(added);
-    }
-    around[static_cast<size_t>(c)].push_back(added);
-    around.push_back({ t, added });
-    if (!wide)
-    {
-      // How far the apex's triangles may lie from the input once widened: as far as the split
-      // left them, or the tolerance.
-      double current = 0.0;
-      const double reach =
-        std::max(FarthestCentroidAround(remesh, around, input.Projector, c, point(c)), tolerance);
-      if (SmallestCornerAround(remesh, around, c, point(c), current))
+      const double* pointC = point(c);
+      double before[3], first[3], second[3];
+      UnitNormal(point(a), point(b), pointC, before);
+      UnitNormal(point(a), m, pointC, first);
+      UnitNormal(m, point(b), pointC, second);
+      if (Dot(before, first) < 0.5 || Dot(before, second) < 0.5 ||
+        input.Projector.FarthestCentroid({ { point(a), m, pointC }, { m, point(b), pointC } }) >
+          std::max(input.Projector.FarthestCentroid({ { point(a), point(b), pointC } }), tolerance))
       {
-        WidenAround(remesh, around, input.Projector, c, reach, true, FitCorner, current);
+        return false;
       }
-      if (current < FitCorner)
+      // A corner far from the edge's middle leaves a thin triangle: then the apex c, when free,
+      // may move along the surface to widen its triangles (a sawtooth border's teeth are often
+      // closer to one end of the edge than the cells are wide).
+      const bool wide = SmallestCorner(point(a), m, pointC) >= FitCorner &&
+        SmallestCorner(m, point(b), pointC) >= FitCorner;
+      const bool apexFree = !pinned[static_cast<size_t>(c)] &&
+        !(static_cast<size_t>(c) < onBorder.size() && onBorder[static_cast<size_t>(c)]);
+      if (!wide && !apexFree)
       {
-        // Undone: the apex back, the two triangles one again, the new vertex gone.
-        std::copy(apexAt.begin(), apexAt.end(), point(c));
-        remesh.SourceTriangles[static_cast<size_t>(c)] = apexTriangle;
-        std::copy(apexWeights.begin(), apexWeights.end(),
-          &remesh.SourceBarycentric[3 * static_cast<size_t>(c)]);
-        around.pop_back();
-        around[static_cast<size_t>(c)].pop_back();
-        around[static_cast<size_t>(b)].back() = t; // was `added`
-        remesh.Triangles.pop_back();
-        remesh.Triangles[static_cast<size_t>(t)] = tri;
-        remesh.Points.resize(3 * static_cast<size_t>(n));
-        remesh.SiteIds.pop_back();
-        remesh.SourceTriangles.pop_back();
-        remesh.SourceBarycentric.resize(3 * static_cast<size_t>(n));
-        continue;
+        return false;
       }
-      // The apex's other triangles changed: their border edges are looked at again.
-      for (int u : around[static_cast<size_t>(c)])
+      // The apex's place, kept (pointC is lost when the points grow) to undo a widening.
+      const std::array<double, 3> apexAt{ pointC[0], pointC[1], pointC[2] };
+      const int apexTriangle = remesh.SourceTriangles[static_cast<size_t>(c)];
+      const std::array<double, 3> apexWeights{ remesh.SourceBarycentric[3 * static_cast<size_t>(c)],
+        remesh.SourceBarycentric[3 * static_cast<size_t>(c) + 1],
+        remesh.SourceBarycentric[3 * static_cast<size_t>(c) + 2] };
+      const int n = static_cast<int>(remesh.SiteIds.size());
+      remesh.Points.insert(remesh.Points.end(), m, m + 3);
+      remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
+      remesh.SourceTriangles.push_back(-1);
+      remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), 3, 0.0);
+      setSource(static_cast<size_t>(n), corner);
+      std::array<int, 3> firstTriangle = tri, secondTriangle = tri;
+      firstTriangle[static_cast<size_t>((k + 1) % 3)] = n; // a m c
+      secondTriangle[static_cast<size_t>(k)] = n;          // m b c
+      remesh.Triangles[static_cast<size_t>(t)] = firstTriangle;
+      remesh.Triangles.push_back(secondTriangle);
+      const int added = static_cast<int>(remesh.Triangles.size()) - 1;
       {
-        for (int j = 0; j < 3; ++j)
+        auto& aroundB = around[static_cast<size_t>(b)]; // not kept: around grows below
+        aroundB.erase(std::find(aroundB.begin(), aroundB.end(), t));
+        aroundB.push_back(added);
+      }
+      around[static_cast<size_t>(c)].push_back(added);
+      around.push_back({ t, added });
+      if (!wide)
+      {
+        // How far the apex's triangles may lie from the input once widened: as far as the split
+        // left them, or the tolerance.
+        double current = 0.0;
+        const double reach =
+          std::max(FarthestCentroidAround(remesh, around, input.Projector, c, point(c)), tolerance);
+        if (SmallestCornerAround(remesh, around, c, point(c), current))
         {
-          work.emplace_back(u, j);
+          WidenAround(remesh, around, input.Projector, c, reach, true, FitCorner, current);
+        }
+        if (current < FitCorner)
+        {
+          // Undone: the apex back, the two triangles one again, the new vertex gone.
+          std::copy(apexAt.begin(), apexAt.end(), point(c));
+          remesh.SourceTriangles[static_cast<size_t>(c)] = apexTriangle;
+          std::copy(apexWeights.begin(), apexWeights.end(),
+            &remesh.SourceBarycentric[3 * static_cast<size_t>(c)]);
+          around.pop_back();
+          around[static_cast<size_t>(c)].pop_back();
+          around[static_cast<size_t>(b)].back() = t; // was `added`
+          remesh.Triangles.pop_back();
+          remesh.Triangles[static_cast<size_t>(t)] = tri;
+          remesh.Points.resize(3 * static_cast<size_t>(n));
+          remesh.SiteIds.pop_back();
+          remesh.SourceTriangles.pop_back();
+          remesh.SourceBarycentric.resize(3 * static_cast<size_t>(n));
+          return false;
+        }
+        // The apex's other triangles changed: their border edges are looked at again.
+        for (int u : around[static_cast<size_t>(c)])
+        {
+          for (int j = 0; j < 3; ++j)
+          {
+            work.emplace_back(u, j);
+          }
         }
       }
+      pinned.push_back(1);
+      places.push_back(corner.At);
+      work.emplace_back(t, k);
+      work.emplace_back(added, k);
+      return true;
+    };
+    // Where it cannot, the corner gets a triangle of its own on the edge's outer side, b a m (an
+    // ear: the sawtooth border of a CAD part, a tooth a cell wide), where that turns by less than
+    // 60 degrees from a b c, lies within half the tolerance of the input, keeps its corners at
+    // FitCorner, leaves room round a and b (their corners and its own sum to less than a turn
+    // less FitCorner) and covers none of their neighbours. a and b, on the border, gain a
+    // triangle; no valence off the border changes.
+    const auto addEar = [&]()
+    {
+      const double* pa = point(a);
+      const double* pb = point(b);
+      double normal[3], earNormal[3];
+      UnitNormal(pa, pb, point(c), normal);
+      UnitNormal(pb, pa, m, earNormal);
+      if (Dot(normal, earNormal) < 0.5 || SmallestCorner(pb, pa, m) < FitCorner)
+      {
+        return false;
+      }
+      // On the input between its corners too (it may reach over a notch of the border).
+      if (FarthestQuarterPoint(input.Projector, pb, pa, m) > 0.5 * tolerance)
+      {
+        return false;
+      }
+      for (const int v : { a, b })
+      {
+        double corners = std::acos(CornerCosine(point(v), v == a ? pb : pa, m));
+        for (int u : around[static_cast<size_t>(v)])
+        {
+          const std::array<int, 3>& other = remesh.Triangles[static_cast<size_t>(u)];
+          const int at = other[0] == v ? 0 : (other[1] == v ? 1 : 2);
+          corners += std::acos(CornerCosine(point(v), point(other[static_cast<size_t>(at + 1) % 3]),
+            point(other[static_cast<size_t>(at + 2) % 3])));
+          // A neighbour over the ear (within a tenth of the edge from it) would be covered.
+          for (int w : other)
+          {
+            double q[3], weights[3];
+            ClosestPointOnTriangle(point(w), pb, pa, m, q, weights);
+            if (w != a && w != b && weights[0] > 0.0 && weights[1] > 0.0 && weights[2] > 0.0 &&
+              Distance2(q, point(w)) < 0.01 * Distance2(pa, pb))
+            {
+              return false;
+            }
+          }
+        }
+        if (corners > 2.0 * 3.14159265358979323846 - FitCorner)
+        {
+          return false;
+        }
+      }
+      const int n = static_cast<int>(remesh.SiteIds.size());
+      remesh.Points.insert(remesh.Points.end(), m, m + 3);
+      remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
+      remesh.SourceTriangles.push_back(-1);
+      remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), 3, 0.0);
+      setSource(static_cast<size_t>(n), corner);
+      remesh.Triangles.push_back({ b, a, n });
+      const int added = static_cast<int>(remesh.Triangles.size()) - 1;
+      around[static_cast<size_t>(a)].push_back(added);
+      around[static_cast<size_t>(b)].push_back(added);
+      around.push_back({ added });
+      pinned.push_back(1);
+      places.push_back(corner.At);
+      work.emplace_back(added, 1); // a m
+      work.emplace_back(added, 2); // m b
+      return true;
+    };
+    if (split() || addEar())
+    {
+      ++splits;
     }
-    pinned.push_back(1);
-    places.push_back(corner.At);
-    work.emplace_back(t, k);
-    work.emplace_back(added, k);
-    ++splits;
   }
   // Thin triangles whose border corners no other pass moves (a strip narrower than the cells,
   // the rim of a small hole): a border vertex of each slides along its loop onto the spot between
