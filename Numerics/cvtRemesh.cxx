@@ -1651,6 +1651,17 @@ int FollowInputBorder(
       }
       continue;
     }
+    // A new vertex at the corner, of the nearer end's site, its source the corner's.
+    const auto addCornerVertex = [&]()
+    {
+      const int n = static_cast<int>(remesh.SiteIds.size());
+      remesh.Points.insert(remesh.Points.end(), m, m + 3);
+      remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
+      remesh.SourceTriangles.push_back(-1);
+      remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), 3, 0.0);
+      setSource(static_cast<size_t>(n), corner);
+      return n;
+    };
     // Else the edge splits at the corner: a m c and m b c, where these turn by less than 60
     // degrees from a b c, lie no farther from the input and keep their corners (widened by the
     // apex if need be).
@@ -1684,12 +1695,7 @@ int FollowInputBorder(
       const std::array<double, 3> apexWeights{ remesh.SourceBarycentric[3 * static_cast<size_t>(c)],
         remesh.SourceBarycentric[3 * static_cast<size_t>(c) + 1],
         remesh.SourceBarycentric[3 * static_cast<size_t>(c) + 2] };
-      const int n = static_cast<int>(remesh.SiteIds.size());
-      remesh.Points.insert(remesh.Points.end(), m, m + 3);
-      remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
-      remesh.SourceTriangles.push_back(-1);
-      remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), 3, 0.0);
-      setSource(static_cast<size_t>(n), corner);
+      const int n = addCornerVertex();
       std::array<int, 3> firstTriangle = tri, secondTriangle = tri;
       firstTriangle[static_cast<size_t>((k + 1) % 3)] = n; // a m c
       secondTriangle[static_cast<size_t>(k)] = n;          // m b c
@@ -1795,12 +1801,7 @@ int FollowInputBorder(
           return false;
         }
       }
-      const int n = static_cast<int>(remesh.SiteIds.size());
-      remesh.Points.insert(remesh.Points.end(), m, m + 3);
-      remesh.SiteIds.push_back(remesh.SiteIds[static_cast<size_t>(nearer)]);
-      remesh.SourceTriangles.push_back(-1);
-      remesh.SourceBarycentric.insert(remesh.SourceBarycentric.end(), 3, 0.0);
-      setSource(static_cast<size_t>(n), corner);
+      const int n = addCornerVertex();
       remesh.Triangles.push_back({ b, a, n });
       const int added = static_cast<int>(remesh.Triangles.size()) - 1;
       around[static_cast<size_t>(a)].push_back(added);

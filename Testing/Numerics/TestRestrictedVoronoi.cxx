@@ -1795,6 +1795,19 @@ TEST(RestrictedVoronoi, RemeshBorderFollowsTheCornersOfTheInputsBorder)
             << " of the diagonal, " << following.BorderCorners << " border vertices added\n";
 }
 
+/// How many of the points `tips` lie farther than 0.8% of `diagonal` from `remesh`.
+int TipsCutOff(const std::vector<double>& tips, const cvt::Remesh& remesh, double diagonal)
+{
+  int cut = 0;
+  for (size_t t = 0; t < tips.size() / 3; ++t)
+  {
+    const std::vector<double> tip(tips.begin() + 3 * t, tips.begin() + 3 * t + 3);
+    cut +=
+      FarthestPoint(tip, { { 0, 0, 0 } }, remesh.Points, remesh.Triangles, 1) > 0.008 * diagonal;
+  }
+  return cut;
+}
+
 TEST(RestrictedVoronoi, RemeshBorderSplitsAtTeethNearAnEdgesEndWhereTheApexMovesToWidenIt)
 {
   // Unit squares whose lower border has teeth 0.03 deep (2.1% of the diagonal) every 3 to 5
@@ -1816,13 +1829,8 @@ TEST(RestrictedVoronoi, RemeshBorderSplitsAtTeethNearAnEdgesEndWhereTheApexMoves
     }
     const cvt::RemeshInput input(saw);
     const cvt::Remesh remesh = cvt::BuildRemesh(MeshDual(saw, sites), 1, 8, input);
-    for (size_t t = 0; t < tips.size() / 3; ++t)
-    {
-      const std::vector<double> tip(tips.begin() + 3 * t, tips.begin() + 3 * t + 3);
-      cut += FarthestPoint(tip, { { 0, 0, 0 } }, remesh.Points, remesh.Triangles, 1) >
-        0.008 * input.Diagonal;
-      ++teeth;
-    }
+    cut += TipsCutOff(tips, remesh, input.Diagonal);
+    teeth += static_cast<int>(tips.size() / 3);
     smallest = std::min(smallest, SmallestAngle(remesh));
     EXPECT_EQ(cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles)
                 .BoundaryLoops,
@@ -1856,13 +1864,8 @@ TEST(RestrictedVoronoi, RemeshBorderGetsAnEarWhereItCutsATipOff)
     }
     const cvt::RemeshInput input(saw);
     const cvt::Remesh remesh = cvt::BuildRemesh(MeshDual(saw, sites), 1, 8, input);
-    for (size_t t = 0; t < tips.size() / 3; ++t)
-    {
-      const std::vector<double> tip(tips.begin() + 3 * t, tips.begin() + 3 * t + 3);
-      cut += FarthestPoint(tip, { { 0, 0, 0 } }, remesh.Points, remesh.Triangles, 1) >
-        0.008 * input.Diagonal;
-      ++teeth;
-    }
+    cut += TipsCutOff(tips, remesh, input.Diagonal);
+    teeth += static_cast<int>(tips.size() / 3);
     added += remesh.BorderCorners;
     smallest = std::min(smallest, SmallestAngle(remesh));
     EXPECT_EQ(cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles)
