@@ -184,11 +184,17 @@ int TopologyMismatch(const cvt::MeshTopology& remesh, const cvt::MeshTopology& i
     std::abs(remesh.EulerCharacteristic - input.EulerCharacteristic);
 }
 
-/// `count` points along loop `loop` of `mesh`, as far apart along it.
-void PointsAlongLoop(const cvt::SurfaceMesh& mesh, const std::vector<int>& loop, int count,
-  std::vector<double>& points)
+/// The part of the input (`input`'s component) that boundary loop `loop` goes round.
+int PartOfLoop(const cvt::MeshTopology& input, const std::vector<int>& loop)
 {
-  const std::vector<double> along = cvt::LoopLengths(mesh.Points, loop);
+  return input.PointComponents[static_cast<size_t>(loop[0])];
+}
+
+/// `count` points along loop `loop` of `mesh` (`along`: its lengths, cvt::LoopLengths), as far
+/// apart along it.
+void PointsAlongLoop(const cvt::SurfaceMesh& mesh, const std::vector<int>& loop,
+  const std::vector<double>& along, int count, std::vector<double>& points)
+{
   for (int k = 0; k < count; ++k)
   {
     const double at = along.back() * k / count;
@@ -213,16 +219,17 @@ void PointsAlongLoop(const cvt::SurfaceMesh& mesh, const std::vector<int>& loop,
 /// dual closes a hole only one or two cells border) gets three points a third of its length apart.
 /// The loops of a part of the input that no part of the remesh lies on (`partsOn`) are left to
 /// SplitPointsOnParts, which samples them along: points here too crowd them into pieces.
-std::vector<double> SplitPointsOnLoops(const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input,
-  const std::vector<int>& labels, const std::vector<int>& partsOn)
+std::vector<double> SplitPointsOnLoops(const cvt::RemeshInput& target,
+  const cvt::MeshTopology& input, const std::vector<int>& labels, const std::vector<int>& partsOn)
 {
+  const cvt::SurfaceMesh& mesh = target.Surface;
   std::vector<double> points;
   // (cell, loop, point) of every loop point, to find the cells that reach several loops.
   std::vector<std::array<int, 3>> reach;
   for (size_t l = 0; l < input.Loops.size(); ++l)
   {
     const std::vector<int>& loop = input.Loops[l];
-    const int part = input.PointComponents[static_cast<size_t>(loop[0])];
+    const int part = PartOfLoop(input, loop);
     if (part >= 0 && partsOn[static_cast<size_t>(part)] == 0)
     {
       continue; // a lost part's rims: SplitPointsOnParts
@@ -238,7 +245,7 @@ std::vector<double> SplitPointsOnLoops(const cvt::SurfaceMesh& mesh, const cvt::
     {
       continue;
     }
-    PointsAlongLoop(mesh, loop, 3, points);
+    PointsAlongLoop(mesh, loop, target.LoopLengths[l], 3, points);
   }
   // Each cell's points, loop by loop; on each loop of a cell that reaches several, the point
   // nearest to its points on the others.
@@ -353,10 +360,11 @@ std::vector<double> SplitPointsBetweenPieces(const cvt::SurfaceMesh& mesh,
 /// pieces (`partsOn`) whose cells reach two pieces, a cell that reaches the loop at two
 /// stretches lying farther apart along it than twice their distance (a strip, not a ragged rim)
 /// gets a point on each, its point there nearest to the other.
-std::vector<double> SplitPointsAcrossStrips(const cvt::SurfaceMesh& mesh,
+std::vector<double> SplitPointsAcrossStrips(const cvt::RemeshInput& target,
   const cvt::MeshTopology& input, const std::vector<int>& labels, const std::vector<int>& siteParts,
   const std::vector<int>& partsOn)
 {
+  const cvt::SurfaceMesh& mesh = target.Surface;
   std::vector<double> points;
   const auto pieceOf = [&](int point)
   {
@@ -365,9 +373,10 @@ std::vector<double> SplitPointsAcrossStrips(const cvt::SurfaceMesh& mesh,
       ? siteParts[static_cast<size_t>(site)]
       : -1;
   };
-  for (const std::vector<int>& loop : input.Loops)
+  for (size_t l = 0; l < input.Loops.size(); ++l)
   {
-    const int part = input.PointComponents[static_cast<size_t>(loop[0])];
+    const std::vector<int>& loop = input.Loops[l];
+    const int part = PartOfLoop(input, loop);
     if (part < 0 || partsOn[static_cast<size_t>(part)] < 2)
     {
       continue;
@@ -409,7 +418,7 @@ std::vector<double> SplitPointsAcrossStrips(const cvt::SurfaceMesh& mesh,
     {
       continue;
     }
-    const std::vector<double> along = cvt::LoopLengths(mesh.Points, loop);
+    const std::vector<double>& along = target.LoopLengths[l];
     const double length = along.back();
     std::sort(stretches.begin(), stretches.end());
     for (size_t a = 0; a < stretches.size(); ++a)
@@ -461,9 +470,10 @@ std::vector<double> SplitPointsAcrossStrips(const cvt::SurfaceMesh& mesh,
 /// apart as the part is wide, more than the cells it lacks), its loops get those points instead:
 /// sites in a row along it, however many, never meet three at a point either; sites on both rims
 /// do (a ring 0.03 wide beside a sphere, at 300 to 1000 sites: lost, now whole).
-std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::MeshTopology& input,
-  const cvt::RestrictedDual& dual, const std::vector<int>& partsOn)
+std::vector<double> SplitPointsOnParts(const cvt::RemeshInput& target,
+  const cvt::MeshTopology& input, const cvt::RestrictedDual& dual, const std::vector<int>& partsOn)
 {
+  const cvt::SurfaceMesh& mesh = target.Surface;
   const auto componentOf = [&](int triangle)
   {
     return triangle < 0
@@ -494,14 +504,12 @@ std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::
   // Lloyd iterations.
   std::vector<double> rimLength(static_cast<size_t>(input.Components), 0.0),
     area(static_cast<size_t>(input.Components), 0.0);
-  const auto componentOfLoop = [&](const std::vector<int>& loop)
-  { return input.PointComponents[static_cast<size_t>(loop[0])]; };
-  for (const std::vector<int>& loop : input.Loops)
+  for (size_t l = 0; l < input.Loops.size(); ++l)
   {
-    const int c = componentOfLoop(loop);
+    const int c = PartOfLoop(input, input.Loops[l]);
     if (c >= 0 && partsOn[static_cast<size_t>(c)] == 0)
     {
-      rimLength[static_cast<size_t>(c)] += cvt::LoopLengths(mesh.Points, loop).back();
+      rimLength[static_cast<size_t>(c)] += target.LoopLengths[l].back();
     }
   }
   if (std::any_of(rimLength.begin(), rimLength.end(), [](double l) { return l > 0.0; }))
@@ -524,15 +532,16 @@ std::vector<double> SplitPointsOnParts(const cvt::SurfaceMesh& mesh, const cvt::
         lacking[c] = 0;
       }
     }
-    for (const std::vector<int>& loop : input.Loops)
+    for (size_t l = 0; l < input.Loops.size(); ++l)
     {
-      const int c = componentOfLoop(loop);
+      const std::vector<int>& loop = input.Loops[l];
+      const std::vector<double>& along = target.LoopLengths[l];
+      const int c = PartOfLoop(input, loop);
       if (c >= 0 && spacing[static_cast<size_t>(c)] > 0.0)
       {
-        const double length = cvt::LoopLengths(mesh.Points, loop).back();
-        PointsAlongLoop(mesh, loop,
+        PointsAlongLoop(mesh, loop, along,
           static_cast<int>(std::min<double>(static_cast<double>(loop.size()),
-            std::max(3.0, std::ceil(length / spacing[static_cast<size_t>(c)])))),
+            std::max(3.0, std::ceil(along.back() / spacing[static_cast<size_t>(c)])))),
           points);
       }
     }
@@ -767,7 +776,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     const std::vector<int> partsOn = RemeshPartsOn(topology, input);
     if (PartMismatch(topology, input) != 0)
     {
-      const std::vector<double> onParts = SplitPointsOnParts(mesh, input, dual, partsOn);
+      const std::vector<double> onParts = SplitPointsOnParts(target, input, dual, partsOn);
       splitPoints.insert(splitPoints.end(), onParts.begin(), onParts.end());
     }
     // A part in pieces where a strip between two holes, or between two stretches of one hole's
@@ -778,7 +787,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     {
       const std::vector<int> siteParts = cvt::RemeshSiteParts(dual, input.Loops.size());
       const std::vector<double> acrossStrips =
-        SplitPointsAcrossStrips(mesh, input, engine.GetPointLabels(), siteParts, partsOn);
+        SplitPointsAcrossStrips(target, input, engine.GetPointLabels(), siteParts, partsOn);
       splitPoints.insert(splitPoints.end(), acrossStrips.begin(), acrossStrips.end());
       const std::vector<double> betweenPieces =
         SplitPointsBetweenPieces(mesh, input, engine.GetPointLabels(), siteParts, partsOn);
@@ -787,7 +796,7 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
     if (topology.BoundaryLoops != input.BoundaryLoops || inPieces)
     {
       const std::vector<double> onLoops =
-        SplitPointsOnLoops(mesh, input, engine.GetPointLabels(), partsOn);
+        SplitPointsOnLoops(target, input, engine.GetPointLabels(), partsOn);
       splitPoints.insert(splitPoints.end(), onLoops.begin(), onLoops.end());
     }
     bool gain = dual.ThinParts < fewestThinParts;
