@@ -1595,4 +1595,10 @@ TEST(RemeshFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   dangling->DeepCopy(Sphere());
   dangling->GetPolys()->GetConnectivityArray()->SetTuple1(4, dangling->GetNumberOfPoints() + 7);
   expectError(dangling, "cells are corrupt");
+  // And a negative id, in cells stored with 32-bit ids (the other storage the check reads).
+  vtkNew<vtkPolyData> negative;
+  negative->DeepCopy(Sphere());
+  ASSERT_TRUE(negative->GetPolys()->ConvertTo32BitStorage());
+  negative->GetPolys()->GetConnectivityArray()->SetTuple1(7, -3);
+  expectError(negative, "cells are corrupt");
 }

@@ -2239,6 +2239,24 @@ TEST(MeshQuality, CountsValencesOffTheBorderApart)
   EXPECT_DOUBLE_EQ(octahedron.InteriorValence6Fraction, 0.0);
 }
 
+TEST(SurfaceMesh, DropsDuplicateTrianglesKeepingTheFirst)
+{
+  // A strip of four triangles over points 0..5 and five copies of three of them (one three
+  // times, some turned over): copies with two different smallest points, each beside triangles
+  // of the same smallest point that are no copies.
+  cvt::SurfaceMesh mesh;
+  mesh.Points = { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0 };
+  mesh.Triangles = { { 0, 1, 4 }, { 0, 4, 3 }, { 1, 2, 5 }, { 1, 5, 4 }, { 4, 0, 1 }, { 2, 5, 1 },
+    { 1, 4, 0 }, { 0, 4, 1 }, { 3, 4, 0 } };
+  cvt::MeshRepairReport report;
+  EXPECT_EQ(cvt::RepairSurfaceMesh(mesh, report), "");
+  EXPECT_EQ(report.DuplicateTriangles, 5);
+  // The first of each set stays, in input order (none was turned over: they agree).
+  const std::vector<std::array<int, 3>> kept = { { 0, 1, 4 }, { 0, 4, 3 }, { 1, 2, 5 },
+    { 1, 5, 4 } };
+  EXPECT_EQ(mesh.Triangles, kept);
+}
+
 TEST(SurfaceMesh, RepairsWhatItCanAndSaysWhatItCannot)
 {
   // A square of two triangles, one flipped, plus a duplicate, a degenerate and an unused point.
