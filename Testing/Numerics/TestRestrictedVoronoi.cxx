@@ -1795,18 +1795,35 @@ TEST(RestrictedVoronoi, RemeshBorderFollowsTheCornersOfTheInputsBorder)
             << " of the diagonal, " << following.BorderCorners << " border vertices added\n";
 }
 
-/// How many of the points `tips` lie farther than 0.8% of `diagonal` from `remesh`.
-int TipsCutOff(const std::vector<double>& tips, const cvt::Remesh& remesh, double diagonal)
+/// The teeth tests' tally over remeshes of saws (squares with teeth along their lower border):
+/// tips farther than 0.8% of the diagonal from the remesh, teeth, border vertices added, the
+/// smallest angle; each remesh keeps the saw's one boundary loop.
+struct TeethTally
 {
-  int cut = 0;
-  for (size_t t = 0; t < tips.size() / 3; ++t)
+  int Cut = 0;
+  int Teeth = 0;
+  int Added = 0;
+  double Smallest = 180.0;
+
+  /// Remeshes `saw` from `sites` sites and counts its teeth, whose tips are `tips` (x, y, z).
+  void Add(const cvt::SurfaceMesh& saw, const std::vector<double>& tips, int sites)
   {
-    const std::vector<double> tip(tips.begin() + 3 * t, tips.begin() + 3 * t + 3);
-    cut +=
-      FarthestPoint(tip, { { 0, 0, 0 } }, remesh.Points, remesh.Triangles, 1) > 0.008 * diagonal;
+    const cvt::RemeshInput input(saw);
+    const cvt::Remesh remesh = cvt::BuildRemesh(MeshDual(saw, sites), 1, 8, input);
+    for (size_t t = 0; t < tips.size() / 3; ++t)
+    {
+      const std::vector<double> tip(tips.begin() + 3 * t, tips.begin() + 3 * t + 3);
+      this->Cut += FarthestPoint(tip, { { 0, 0, 0 } }, remesh.Points, remesh.Triangles, 1) >
+        0.008 * input.Diagonal;
+      ++this->Teeth;
+    }
+    this->Added += remesh.BorderCorners;
+    this->Smallest = std::min(this->Smallest, SmallestAngle(remesh));
+    EXPECT_EQ(cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles)
+                .BoundaryLoops,
+      1);
   }
-  return cut;
-}
+};
 
 TEST(RestrictedVoronoi, RemeshBorderSplitsAtTeethNearAnEdgesEndWhereTheApexMovesToWidenIt)
 {
@@ -1815,8 +1832,7 @@ TEST(RestrictedVoronoi, RemeshBorderSplitsAtTeethNearAnEdgesEndWhereTheApexMoves
   // the cells' border points cut teeth off, often nearer one of their ends than a split there
   // can take with corners of 27 degrees, unless the edge's triangle's free apex moves along the
   // surface to widen the two new triangles. Without that, 35 of these 52 teeth stay cut off.
-  int cut = 0, teeth = 0;
-  double smallest = 180.0;
+  TeethTally tally;
   for (const auto& [spacing, sites] :
     std::vector<std::pair<int, int>>{ { 3, 60 }, { 3, 70 }, { 4, 80 }, { 5, 80 }, { 5, 90 } })
   {
@@ -1827,20 +1843,13 @@ TEST(RestrictedVoronoi, RemeshBorderSplitsAtTeethNearAnEdgesEndWhereTheApexMoves
       saw.Points[3 * static_cast<size_t>(i) + 1] = -0.03;
       tips.insert(tips.end(), { saw.Points[3 * static_cast<size_t>(i)], -0.03, 0.0 });
     }
-    const cvt::RemeshInput input(saw);
-    const cvt::Remesh remesh = cvt::BuildRemesh(MeshDual(saw, sites), 1, 8, input);
-    cut += TipsCutOff(tips, remesh, input.Diagonal);
-    teeth += static_cast<int>(tips.size() / 3);
-    smallest = std::min(smallest, SmallestAngle(remesh));
-    EXPECT_EQ(cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles)
-                .BoundaryLoops,
-      1);
+    tally.Add(saw, tips, sites);
   }
-  EXPECT_EQ(teeth, 52);
-  EXPECT_LE(cut, 30);
-  EXPECT_GE(smallest, 27.0);
-  std::cout << "[ measured ] " << cut << " of " << teeth << " teeth cut off, smallest angle "
-            << smallest << " degrees\n";
+  EXPECT_EQ(tally.Teeth, 52);
+  EXPECT_LE(tally.Cut, 30);
+  EXPECT_GE(tally.Smallest, 27.0);
+  std::cout << "[ measured ] " << tally.Cut << " of " << tally.Teeth
+            << " teeth cut off, smallest angle " << tally.Smallest << " degrees\n";
 }
 
 TEST(RestrictedVoronoi, RemeshBorderGetsAnEarWhereItCutsATipOff)
@@ -1849,8 +1858,7 @@ TEST(RestrictedVoronoi, RemeshBorderGetsAnEarWhereItCutsATipOff)
   // under cells about as wide: a border edge that cuts a tooth's tip off, where neither end can
   // move onto the tip nor the edge split there with corners of 27 degrees, gets a triangle of
   // its own out to the tip (an ear). Without ears, 39 of these 50 teeth stay cut off.
-  int cut = 0, teeth = 0, added = 0;
-  double smallest = 180.0;
+  TeethTally tally;
   for (int sites : { 50, 55, 60, 70, 80 })
   {
     cvt::SurfaceMesh saw = FlatSquare(40, 0.0, 1.0);
@@ -1862,21 +1870,14 @@ TEST(RestrictedVoronoi, RemeshBorderGetsAnEarWhereItCutsATipOff)
       saw.Points[3 * static_cast<size_t>(i + 1) + 1] = -0.04;
       tips.insert(tips.end(), { saw.Points[3 * static_cast<size_t>(i)], -0.08, 0.0 });
     }
-    const cvt::RemeshInput input(saw);
-    const cvt::Remesh remesh = cvt::BuildRemesh(MeshDual(saw, sites), 1, 8, input);
-    cut += TipsCutOff(tips, remesh, input.Diagonal);
-    teeth += static_cast<int>(tips.size() / 3);
-    added += remesh.BorderCorners;
-    smallest = std::min(smallest, SmallestAngle(remesh));
-    EXPECT_EQ(cvt::ComputeMeshTopology(static_cast<int>(remesh.SiteIds.size()), remesh.Triangles)
-                .BoundaryLoops,
-      1);
+    tally.Add(saw, tips, sites);
   }
-  EXPECT_EQ(teeth, 50);
-  EXPECT_LE(cut, 33);
-  EXPECT_GE(smallest, 27.0);
-  std::cout << "[ measured ] " << cut << " of " << teeth << " teeth cut off, " << added
-            << " border vertices added, smallest angle " << smallest << " degrees\n";
+  EXPECT_EQ(tally.Teeth, 50);
+  EXPECT_LE(tally.Cut, 33);
+  EXPECT_GE(tally.Smallest, 27.0);
+  std::cout << "[ measured ] " << tally.Cut << " of " << tally.Teeth << " teeth cut off, "
+            << tally.Added << " border vertices added, smallest angle " << tally.Smallest
+            << " degrees\n";
 }
 
 TEST(RestrictedVoronoi, RemeshBorderVerticesSlideAlongTheBorderToWidenThinTriangles)
