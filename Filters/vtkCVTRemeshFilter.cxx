@@ -1408,13 +1408,13 @@ bool IsCleanTriangleMesh(vtkPolyData* input)
   {
     return false;
   }
-  cvt::SurfaceMesh points; // its points alone, for their diagonal (VTK's bounds cost 3 times more)
-  points.Points.resize(3 * static_cast<size_t>(pointCount));
+  std::vector<double> points(3 * static_cast<size_t>(pointCount));
   for (vtkIdType p = 0; p < pointCount; ++p)
   {
-    input->GetPoint(p, &points.Points[3 * static_cast<size_t>(p)]);
+    input->GetPoint(p, &points[3 * static_cast<size_t>(p)]);
   }
-  return !cvt::HasPointsWithin(points.Points, MergeTolerance * cvt::BoundingBoxDiagonal(points));
+  // The diagonal of the points copied (VTK's bounds, input->GetLength(), cost 3 times more).
+  return !cvt::HasPointsWithin(points, MergeTolerance * cvt::BoundingBoxDiagonal(points));
 }
 
 /// Splits polygons into triangles, its buffers kept from one polygon to the next. Split appends

@@ -1019,21 +1019,26 @@ MeshTopology ComputeMeshTopology(
   return topology;
 }
 
-double BoundingBoxDiagonal(const SurfaceMesh& mesh)
+double BoundingBoxDiagonal(const std::vector<double>& points)
 {
+  const size_t count = points.size() / 3;
   double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
-  for (int p = 0; p < mesh.NumberOfPoints(); ++p)
+  for (size_t p = 0; p < count; ++p)
   {
     for (int k = 0; k < 3; ++k)
     {
-      lo[k] = std::min(lo[k], mesh.Point(p)[k]);
-      hi[k] = std::max(hi[k], mesh.Point(p)[k]);
+      lo[k] = std::min(lo[k], points[3 * p + static_cast<size_t>(k)]);
+      hi[k] = std::max(hi[k], points[3 * p + static_cast<size_t>(k)]);
     }
   }
-  return mesh.NumberOfPoints() == 0
-    ? 0.0
-    : std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-        (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  return count == 0 ? 0.0
+                    : std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
+                        (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+double BoundingBoxDiagonal(const SurfaceMesh& mesh)
+{
+  return BoundingBoxDiagonal(mesh.Points);
 }
 
 double SurfaceArea(const SurfaceMesh& mesh)

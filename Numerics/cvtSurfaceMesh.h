@@ -109,8 +109,9 @@ CVTNUMERICS_EXPORT std::vector<double> LoopLengths(
 CVTNUMERICS_EXPORT MeshTopology ComputeMeshTopology(
   int numberOfPoints, const std::vector<std::array<int, 3>>& triangles);
 
-/// The length of the diagonal of the box round the mesh's points.
+/// The length of the diagonal of the box round the mesh's points, or round `points` (x, y, z).
 CVTNUMERICS_EXPORT double BoundingBoxDiagonal(const SurfaceMesh& mesh);
+CVTNUMERICS_EXPORT double BoundingBoxDiagonal(const std::vector<double>& points);
 
 /// Total area, and each triangle's area times its mean density (the sampling weight).
 CVTNUMERICS_EXPORT double SurfaceArea(const SurfaceMesh& mesh);
