@@ -60,7 +60,8 @@ public:
   /**
    * Render a surface mesh (a remesh) of any shape, size and orientation, seen mostly along its
    * thinnest principal axis (an open sheet from the side its normals face) and tilted, the
-   * longest axis across, each triangle in its own colour
+   * longest axis across, framed whole (within 90% of the picture's width and height), each
+   * triangle in its own colour
    * (lit from the camera) with its edges drawn, into an RGB image of Size x 3/4 Size (a
    * z-buffer, drawn on the CPU). nullptr with a message in GetLastError() when the mesh has no
    * polygons. The picture belongs to this renderer, as with Render.

@@ -248,19 +248,17 @@ TEST(RegressionImage, MeshPictureFacesATiltedSheet)
   EXPECT_LT(drawn.YMax, dims[1] - 1);
 }
 
-// A box seen from above and in front, drawn on the CPU: framed whole, edges drawn, and only the
-// two faces turned to the camera visible. The box's triangles come bottom (hidden) after front
-// (seen), so a picture without depth testing would show the bottom's colours over the front.
-TEST(RegressionImage, MeshPictureShowsOnlyTheFacesInFront)
+namespace
 {
-  // A 3 x 2 x 1 box: the camera looks along its thinnest axis (z) tilted towards -y, so the
-  // top (+z) and front (-y) faces are in view.
+/// An x by y by z box from the origin, two triangles per face: -x, +x, -y (front), +y, -z
+/// (bottom), +z (top).
+vtkSmartPointer<vtkPolyData> Box(double x, double y, double z)
+{
   vtkNew<vtkPoints> points;
   for (int corner = 0; corner < 8; ++corner)
   {
-    points->InsertNextPoint(corner & 1 ? 3.0 : 0.0, corner & 2 ? 2.0 : 0.0, corner & 4 ? 1.0 : 0.0);
+    points->InsertNextPoint(corner & 1 ? x : 0.0, corner & 2 ? y : 0.0, corner & 4 ? z : 0.0);
   }
-  // Faces -x, +x, -y (front), +y, -z (bottom), +z (top), two triangles each.
   const vtkIdType faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
     { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
   vtkNew<vtkCellArray> triangles;
@@ -271,9 +269,21 @@ TEST(RegressionImage, MeshPictureShowsOnlyTheFacesInFront)
     triangles->InsertNextCell(3, first);
     triangles->InsertNextCell(3, second);
   }
-  vtkNew<vtkPolyData> box;
+  auto box = vtkSmartPointer<vtkPolyData>::New();
   box->SetPoints(points);
   box->SetPolys(triangles);
+  return box;
+}
+} // namespace
+
+// A box seen from above and in front, drawn on the CPU: framed whole, edges drawn, and only the
+// two faces turned to the camera visible. The box's triangles come bottom (hidden) after front
+// (seen), so a picture without depth testing would show the bottom's colours over the front.
+TEST(RegressionImage, MeshPictureShowsOnlyTheFacesInFront)
+{
+  // A 3 x 2 x 1 box: the camera looks along its thinnest axis (z) tilted towards -y, so the
+  // top (+z) and front (-y) faces are in view.
+  const vtkSmartPointer<vtkPolyData> box = Box(3.0, 2.0, 1.0);
 
   vtkNew<vtkCVTSceneRenderer> scene;
   scene->SetSize(200);
@@ -308,7 +318,26 @@ TEST(RegressionImage, MeshPictureShowsOnlyTheFacesInFront)
   EXPECT_TRUE(std::equal(
     rgb, rgb + 3 * dims[0] * dims[1], static_cast<unsigned char*>(again->GetScalarPointer())));
   vtkNew<vtkPolyData> pointsOnly;
-  pointsOnly->SetPoints(points);
+  pointsOnly->SetPoints(box->GetPoints());
   EXPECT_EQ(scene->RenderMesh(pointsOnly), nullptr);
   EXPECT_NE(scene->GetLastError().find("no triangles"), std::string::npos);
+}
+
+// A cube: its corners reach as far from its middle along every axis, so a camera fitted to its
+// bounding sphere and zoomed for long shapes cut its top off; it is framed whole, across most
+// of the picture's height.
+TEST(RegressionImage, MeshPictureFramesACubeWhole)
+{
+  vtkNew<vtkCVTSceneRenderer> scene;
+  scene->SetSize(200);
+  vtkSmartPointer<vtkImageData> picture = scene->RenderMesh(Box(1.0, 1.0, 1.0));
+  ASSERT_NE(picture, nullptr) << scene->GetLastError();
+  int dims[3];
+  picture->GetDimensions(dims);
+  const DrawnPixels drawn(picture);
+  EXPECT_GT(drawn.XMin, 0);
+  EXPECT_LT(drawn.XMax, dims[0] - 1);
+  EXPECT_GT(drawn.YMin, 0);
+  EXPECT_LT(drawn.YMax, dims[1] - 1);
+  EXPECT_GT(drawn.YMax - drawn.YMin, dims[1] * 3 / 4);
 }
