@@ -54,9 +54,25 @@ double Field(vtkDataObject* data, const char* name)
   return array ? array->GetTuple1(0) : std::nan("");
 }
 
-/// The surface where the image's scalars are 0 (marching cubes).
-vtkSmartPointer<vtkPolyData> ZeroContour(vtkImageData* field)
+/// The surface where `value` is 0 (marching cubes of its samples at a grid of `dimensions`
+/// points from `origin`, `spacing` apart).
+vtkSmartPointer<vtkPolyData> ZeroContour(const std::array<int, 3>& dimensions,
+  const std::array<double, 3>& origin, const std::array<double, 3>& spacing,
+  const std::function<double(const double*)>& value)
 {
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(dimensions.data());
+  field->SetOrigin(origin.data());
+  field->SetSpacing(spacing.data());
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfValues(field->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < field->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    field->GetPoint(p, x);
+    values->SetValue(p, value(x));
+  }
+  field->GetPointData()->SetScalars(values);
   vtkNew<vtkFlyingEdges3D> contour;
   contour->SetInputData(field);
   contour->SetValue(0, 0.0);
@@ -73,27 +89,19 @@ vtkSmartPointer<vtkPolyData> Tori(int count)
 {
   const int n = 72;
   const double half = 0.8 * count + 1.0;
-  vtkNew<vtkImageData> field;
-  field->SetDimensions(n, n / 2, n / 4);
-  field->SetOrigin(-half, -1.5, -0.6);
-  field->SetSpacing(2 * half / (n - 1), 3.0 / (n / 2 - 1), 1.2 / (n / 4 - 1));
-  vtkNew<vtkDoubleArray> values;
-  values->SetNumberOfValues(field->GetNumberOfPoints());
-  for (vtkIdType p = 0; p < field->GetNumberOfPoints(); ++p)
-  {
-    double x[3];
-    field->GetPoint(p, x);
-    double value = 1.0;
-    for (int k = 0; k < count; ++k)
+  return ZeroContour({ n, n / 2, n / 4 }, { -half, -1.5, -0.6 },
+    { 2 * half / (n - 1), 3.0 / (n / 2 - 1), 1.2 / (n / 4 - 1) },
+    [count](const double* x)
     {
-      const double cx = (k - (count - 1) / 2.0) * 1.6;
-      const double ring = std::hypot(x[0] - cx, x[1]) - 1.0;
-      value = std::min(value, ring * ring + x[2] * x[2] - 0.35 * 0.35);
-    }
-    values->SetValue(p, value);
-  }
-  field->GetPointData()->SetScalars(values);
-  return ZeroContour(field);
+      double value = 1.0;
+      for (int k = 0; k < count; ++k)
+      {
+        const double cx = (k - (count - 1) / 2.0) * 1.6;
+        const double ring = std::hypot(x[0] - cx, x[1]) - 1.0;
+        value = std::min(value, ring * ring + x[2] * x[2] - 0.35 * 0.35);
+      }
+      return value;
+    });
 }
 
 /// Marching cubes of a flat ring (radii 0.6 and 1, 0.12 thick) with `holes` bolt holes of
@@ -101,28 +109,20 @@ vtkSmartPointer<vtkPolyData> Tori(int count)
 vtkSmartPointer<vtkPolyData> Flange(int holes)
 {
   const int n = 110, nz = 24;
-  vtkNew<vtkImageData> field;
-  field->SetDimensions(n, n, nz);
-  field->SetOrigin(-1.1, -1.1, -0.2);
-  field->SetSpacing(2.2 / (n - 1), 2.2 / (n - 1), 0.4 / (nz - 1));
-  vtkNew<vtkDoubleArray> values;
-  values->SetNumberOfValues(field->GetNumberOfPoints());
-  for (vtkIdType p = 0; p < field->GetNumberOfPoints(); ++p)
-  {
-    double x[3];
-    field->GetPoint(p, x);
-    const double radius = std::hypot(x[0], x[1]);
-    double value = std::max({ std::abs(x[2]) - 0.06, radius - 1.0, 0.6 - radius });
-    for (int k = 0; k < holes; ++k)
+  return ZeroContour({ n, n, nz }, { -1.1, -1.1, -0.2 },
+    { 2.2 / (n - 1), 2.2 / (n - 1), 0.4 / (nz - 1) },
+    [holes](const double* x)
     {
-      const double angle = 2 * vtkMath::Pi() * k / holes;
-      value = std::max(
-        value, 0.04 - std::hypot(x[0] - 0.8 * std::cos(angle), x[1] - 0.8 * std::sin(angle)));
-    }
-    values->SetValue(p, value);
-  }
-  field->GetPointData()->SetScalars(values);
-  return ZeroContour(field);
+      const double radius = std::hypot(x[0], x[1]);
+      double value = std::max({ std::abs(x[2]) - 0.06, radius - 1.0, 0.6 - radius });
+      for (int k = 0; k < holes; ++k)
+      {
+        const double angle = 2 * vtkMath::Pi() * k / holes;
+        value = std::max(
+          value, 0.04 - std::hypot(x[0] - 0.8 * std::cos(angle), x[1] - 0.8 * std::sin(angle)));
+      }
+      return value;
+    });
 }
 
 /// Marching cubes of a unit ball with a tail: a tube of radius `tail` along x from the ball to
@@ -130,23 +130,14 @@ vtkSmartPointer<vtkPolyData> Flange(int holes)
 vtkSmartPointer<vtkPolyData> BallWithTail(double tail)
 {
   const int nx = 104, ny = 64;
-  vtkNew<vtkImageData> field;
-  field->SetDimensions(nx, ny, ny);
-  field->SetOrigin(-1.2, -1.2, -1.2);
-  field->SetSpacing(3.6 / (nx - 1), 2.4 / (ny - 1), 2.4 / (ny - 1));
-  vtkNew<vtkDoubleArray> values;
-  values->SetNumberOfValues(field->GetNumberOfPoints());
-  for (vtkIdType p = 0; p < field->GetNumberOfPoints(); ++p)
-  {
-    double x[3];
-    field->GetPoint(p, x);
-    const double along = std::clamp(x[0], 0.5, 2.2 - tail);
-    const double tube = std::sqrt((x[0] - along) * (x[0] - along) + x[1] * x[1] + x[2] * x[2]);
-    values->SetValue(
-      p, std::min(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 1.0, tube - tail));
-  }
-  field->GetPointData()->SetScalars(values);
-  return ZeroContour(field);
+  return ZeroContour({ nx, ny, ny }, { -1.2, -1.2, -1.2 },
+    { 3.6 / (nx - 1), 2.4 / (ny - 1), 2.4 / (ny - 1) },
+    [tail](const double* x)
+    {
+      const double along = std::clamp(x[0], 0.5, 2.2 - tail);
+      const double tube = std::sqrt((x[0] - along) * (x[0] - along) + x[1] * x[1] + x[2] * x[2]);
+      return std::min(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 1.0, tube - tail);
+    });
 }
 
 vtkSmartPointer<vtkPolyData> Sphere(double radius = 1.0, double x = 0.0)
