@@ -776,6 +776,15 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
   TopologyRefinement bounded;
   const size_t ceiling = TopologyAddedSitesCeilingPerBound * bound;
   bool ceilingReached = false;
+  // Whether the split points added to the sites of a round would pass the ceiling (which ends
+  // the rounds: set `ceilingReached` then).
+  const auto passesCeiling =
+    [&](const std::vector<double>& refined, const std::vector<double>& splitPoints)
+  {
+    const bool passes = refined.size() + splitPoints.size() > sites.size() + 3 * ceiling;
+    ceilingReached = ceilingReached || passes;
+    return passes;
+  };
   // Rounds since the best remesh or the fewest thin parts so far last improved.
   int roundsWithoutGain = 0, fewestThinParts = std::numeric_limits<int>::max();
   // Whether the best remesh lacks a part of the input.
@@ -888,9 +897,8 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
          round <= MaximumTopologyRounds && !aborted();
          ++round)
     {
-      if (refined.size() + splitPoints.size() > sites.size() + 3 * ceiling)
+      if (passesCeiling(refined, splitPoints))
       {
-        ceilingReached = true;
         break;
       }
       refined.insert(refined.end(), splitPoints.begin(), splitPoints.end());
@@ -917,9 +925,8 @@ bool RefineForTopology(cvt::RestrictedVoronoi& engine, const cvt::RemeshInput& t
          !splitPoints.empty() && round <= FinalPassRounds && !aborted();
          ++round)
     {
-      if (refined.size() + splitPoints.size() > sites.size() + 3 * ceiling)
+      if (passesCeiling(refined, splitPoints))
       {
-        ceilingReached = true;
         break;
       }
       const size_t firstAdded = refined.size() / 3;

@@ -970,6 +970,7 @@ MeshTopology ComputeMeshTopology(
   // maps keyed by the parts' roots, which took half of its time on large meshes).
   topology.PointComponents.assign(numberOfPoints, -1);
   std::vector<int> componentOfRoot(static_cast<size_t>(numberOfPoints), -1);
+  std::vector<int> verticesOf; // per component
   for (int p = 0; p < numberOfPoints; ++p)
   {
     if (used[p])
@@ -978,20 +979,14 @@ MeshTopology ComputeMeshTopology(
       if (component < 0)
       {
         component = topology.Components++;
+        verticesOf.push_back(0);
       }
       topology.PointComponents[p] = component;
+      ++verticesOf[static_cast<size_t>(component)];
     }
   }
   const size_t components = static_cast<size_t>(topology.Components);
-  std::vector<int> verticesOf(components, 0), edgesOf(components, 0), facesOf(components, 0),
-    loopsOf(components, 0);
-  for (int p = 0; p < numberOfPoints; ++p)
-  {
-    if (used[p])
-    {
-      ++verticesOf[static_cast<size_t>(topology.PointComponents[p])];
-    }
-  }
+  std::vector<int> edgesOf(components, 0), facesOf(components, 0), loopsOf(components, 0);
   for (size_t e = 0; e < edges.NumberOfEdges(); ++e)
   {
     ++edgesOf[static_cast<size_t>(
