@@ -31,7 +31,8 @@
  *    valences closer to 6 (CollapseForValence; off, a vertex per site); field data with
  *    valence and angle measures, topology, and how far input and remesh lie from each other
  *    (InputToRemeshDistance, RemeshToInputDistance: shares of the input's bounding-box
- *    diagonal, measured at points 0.8% of it apart on each);
+ *    diagonal, measured at points 0.8% of it apart on each, 0.2% apart near those that lie
+ *    almost 0.9% of it off);
  * 3. history: vtkTable (iteration, evaluations, energy, gradient_norm, seconds).
  * Bad input gives a clear error, empty outputs and RequestData returning 0.
  */

@@ -154,7 +154,13 @@ struct RemeshFidelity
   /// remesh triangle, for measuring a remesh that differs from this one in places.
   std::vector<double> ProbeDistances;
   std::vector<int> ProbeTriangles;
-  /// The remesh's own points it was measured at (CoveringPoints) and their distances to the input.
+  /// Input points between the probes (near those that lie almost as far as the share asked
+  /// for), measured likewise.
+  std::vector<double> FinerProbes;
+  std::vector<double> FinerProbeDistances;
+  std::vector<int> FinerProbeTriangles;
+  /// The remesh's own points it was measured at (CoveringPoints, then those between them) and
+  /// their distances to the input.
   std::vector<double> RemeshPoints;
   std::vector<double> RemeshPointDistances;
 
@@ -166,7 +172,9 @@ struct RemeshFidelity
 CVTNUMERICS_EXPORT std::vector<char> BorderVertices(const Remesh& remesh);
 
 /// How far `remesh` and `input` lie from each other (each measured at its CoveringPoints 0.8%
-/// of the input's diagonal apart, against the other's triangles near them), and where they lie
+/// of the input's diagonal apart, against the other's triangles near them, and again at points
+/// 0.2% apart within 0.8% of those beyond 70% of `share` but within it: the distance can peak
+/// between them, over a crease, by up to 0.3% more), and where they lie
 /// farther than `share` of the diagonal apart: the input points that far from the remesh (tips
 /// and creases its triangles cut off) and the input points nearest to remesh points that far
 /// from the input (triangles bridging a fold), farthest first, none within twice its distance of
@@ -175,8 +183,9 @@ CVTNUMERICS_EXPORT std::vector<char> BorderVertices(const Remesh& remesh);
 /// `before` that this one differs from in places (as one with sites added differs from the remesh
 /// without) and its fidelity `measuredBefore`, an input probe whose nearest triangle there is also
 /// here (the same corners in the same order) is measured against the triangles that are new here
-/// alone, and a remesh point that was measured there (the same to the bit) is not measured again:
-/// the same distances from far fewer queries.
+/// alone (so is an input point between the probes that was measured there, the same to the bit),
+/// and a remesh point that was measured there (likewise) is not measured again: the same
+/// distances from far fewer queries.
 CVTNUMERICS_EXPORT RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input,
   double share, size_t maximumPoints, size_t maximumBorderPoints, const Remesh* before = nullptr,
   const RemeshFidelity* measuredBefore = nullptr);

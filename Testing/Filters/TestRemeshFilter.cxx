@@ -568,8 +568,9 @@ TEST(RemeshFilter, SitesAtFarInputPointsAreSettledAmongTheirNeighbours)
   EXPECT_GE(Field(run.Remesh(), "MinimumAngle"), 25.0);
   const double farthest = FarthestInputPoint(spikes, run.Remesh());
   EXPECT_LT(farthest, 0.01);
-  // The remesh's own measure of both ways (at points 0.8% of the diagonal apart) against brute
-  // force at the points of each triangle's quarters (two linear subdivisions).
+  // The remesh's own measure of both ways (at points 0.8% of the diagonal apart, closer near
+  // 0.9%) against brute force at the points of each triangle's quarters (two linear
+  // subdivisions).
   const auto dense = [](vtkPolyData* mesh)
   {
     vtkNew<vtkLinearSubdivisionFilter> subdivide;
@@ -612,18 +613,18 @@ TEST(RemeshFilter, FarInputPointsAreTriedByHalvesWhenAllOfThemAtOnceMissTheTarge
 
 TEST(RemeshFilter, FarPointsLeftBeyondTheTargetGetASecondBudget)
 {
-  // Twelve spikes at 200 sites: the first budget of sites at far input points (1% of the
-  // vertices, 2 sites) leaves the remesh 1.18% of the diagonal from the input (by the filter's
+  // Eight spikes at 300 sites: the first budget of sites at far input points (1% of the
+  // vertices, 3 sites) leaves the remesh 1.09% of the diagonal from the input (by the filter's
   // measure) at the tips. Where it still lies beyond the target of 1% once that budget is spent,
-  // a second pass with three times the budget gives the other tips sites: 0.91%.
-  vtkSmartPointer<vtkPolyData> spikes = SphereWithSpikes(FibonacciDirections(12));
-  RemeshRun run(spikes, 200, 100);
+  // a second pass with three times the budget gives the other tips sites: 0.89%.
+  vtkSmartPointer<vtkPolyData> spikes = SphereWithSpikes(FibonacciDirections(8));
+  RemeshRun run(spikes, 300, 100);
   ASSERT_TRUE(run.Status) << run.Log->Errors;
   ExpectTopology(run.Remesh(), 1, 0, 0);
   vtkPolyData* sites = run.Filter->GetSitesOutput();
-  EXPECT_EQ(sites->GetNumberOfPoints(), 200);
-  EXPECT_GT(Field(sites, "FarPointSites"), 2);
-  EXPECT_LE(Field(sites, "FarPointSites"), 6);
+  EXPECT_EQ(sites->GetNumberOfPoints(), 300);
+  EXPECT_GT(Field(sites, "FarPointSites"), 3);
+  EXPECT_LE(Field(sites, "FarPointSites"), 9);
   EXPECT_LT(Field(run.Remesh(), "RemeshToInputDistance"), 0.01);
   EXPECT_LT(Field(run.Remesh(), "InputToRemeshDistance"), 0.01);
   // Independently: the remesh's triangles (each cut in 16) against the input, and back.
@@ -631,7 +632,7 @@ TEST(RemeshFilter, FarPointsLeftBeyondTheTargetGetASecondBudget)
   const double inputToRemesh = FarthestInputPoint(spikes, run.Remesh());
   EXPECT_LT(remeshToInput, 0.01);
   EXPECT_LT(inputToRemesh, 0.01);
-  std::cout << "[ measured ] twelve spikes at 200 sites: " << Field(sites, "FarPointSites")
+  std::cout << "[ measured ] eight spikes at 300 sites: " << Field(sites, "FarPointSites")
             << " sites at far input points; remesh to input " << 100.0 * remeshToInput
             << "%, input to remesh " << 100.0 * inputToRemesh << "% of the diagonal\n";
 }
@@ -710,14 +711,16 @@ TEST(RemeshFilter, ThinTrianglesByTheBorderGetSitesOfTheirOwn)
             << 100.0 * inputToRemesh << "% of the diagonal\n";
 }
 
-TEST(RemeshFilter, SitesForAnglesThatTakeTheRemeshFarGoThroughFidelityRounds)
+TEST(RemeshFilter, SitesForAnglesKeepTheRemeshWithinTheTarget)
 {
-  // Thirty holes 0.12 radians wide at 1000 sites leave a 19.8-degree corner by the border; the
-  // site at that triangle's centroid widens it but takes the remesh from 1.00% to 1.28% of the
-  // diagonal from the input, and is kept only once fidelity rounds of its own bring it back.
+  // Thirty holes 0.1 radians wide at 1000 sites leave a 20.3-degree corner by the border; sites
+  // at the centroids of such triangles widen them, and are kept only where the remesh stays
+  // within the target (else they get fidelity rounds of their own, which bring it back or drop
+  // them; since the fidelity rounds measure between their points, they leave the remesh within
+  // 0.9% here, and so do the angle sites).
   const int holes = 30;
   vtkSmartPointer<vtkPolyData> input =
-    SphereWithHoles(FibonacciDirections(holes), std::cos(0.06), 180, 140);
+    SphereWithHoles(FibonacciDirections(holes), std::cos(0.05), 180, 140);
   RemeshRun run(input, 1000, 100);
   ASSERT_TRUE(run.Status) << run.Log->Errors;
   ExpectTopology(run.Remesh(), 1, 0, holes);

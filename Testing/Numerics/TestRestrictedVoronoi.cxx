@@ -2113,6 +2113,71 @@ TEST(RestrictedVoronoi, FidelityTellsFarPointsOnTheBorderApart)
   EXPECT_EQ(count(borderOnly, true), 3);
 }
 
+/// The unit square folded into a valley along x = `crease`: z = |x - crease|, its points in
+/// columns at `columns` (x) and rows `rowSpacing` apart (y), two triangles per cell.
+cvt::SurfaceMesh Valley(double crease, const std::vector<double>& columns, double rowSpacing)
+{
+  cvt::SurfaceMesh mesh;
+  const int rows = static_cast<int>(std::lround(1.0 / rowSpacing));
+  const int width = static_cast<int>(columns.size());
+  for (int j = 0; j <= rows; ++j)
+  {
+    for (double x : columns)
+    {
+      mesh.Points.insert(mesh.Points.end(), { x, j * rowSpacing, std::abs(x - crease) });
+    }
+  }
+  for (int j = 0; j < rows; ++j)
+  {
+    for (int i = 0; i + 1 < width; ++i)
+    {
+      const int a = j * width + i, b = a + 1, c = a + width + 1, d = a + width;
+      mesh.Triangles.push_back({ a, b, c });
+      mesh.Triangles.push_back({ a, c, d });
+    }
+  }
+  return mesh;
+}
+
+TEST(RestrictedVoronoi, FidelityFindsThePeaksBetweenItsPoints)
+{
+  // A valley, and the same valley bridged by a flat strip 0.05 wide across its crease (rows 0.01
+  // apart): the strip's middle lies 0.025 / sqrt(2) from the valley (1.18% of the diagonal), and
+  // so does the valley's crease from the strip. Measured at points 0.8% of the diagonal (0.012)
+  // apart, which the strip has 0.01 apart across it, 0.005 either side of the crease, both ways
+  // read 0.24% of the diagonal low; measured again closer near the points beyond 70% of the
+  // share asked for, within 0.1% of it, and never above it.
+  const double crease = 0.5;
+  const cvt::SurfaceMesh valley = Valley(crease, { 0.0, crease, 1.0 }, 1.0);
+  const cvt::SurfaceMesh bridged =
+    Valley(crease, { 0.0, crease - 0.025, crease + 0.025, 1.0 }, 0.01);
+  // Shares of each input's diagonal (the strip does not reach the crease).
+  const double peak = 0.025 / std::sqrt(2.0);
+  const double fromValley = peak / cvt::BoundingBoxDiagonal(valley);
+  const double fromBridged = peak / cvt::BoundingBoxDiagonal(bridged);
+  const auto asRemesh = [](const cvt::SurfaceMesh& mesh)
+  {
+    cvt::Remesh remesh;
+    remesh.Points = mesh.Points;
+    remesh.Triangles = mesh.Triangles;
+    return remesh;
+  };
+  const cvt::RemeshInput valleyInput(valley), bridgedInput(bridged);
+  const cvt::RemeshFidelity remeshAbove =
+    cvt::MeasureFidelity(asRemesh(bridged), valleyInput, 1.1 * fromValley, 10, 10);
+  const cvt::RemeshFidelity inputAbove =
+    cvt::MeasureFidelity(asRemesh(valley), bridgedInput, 1.1 * fromBridged, 10, 10);
+  EXPECT_NEAR(remeshAbove.RemeshToInput, fromValley, 0.001);
+  EXPECT_LE(remeshAbove.RemeshToInput, fromValley + 1e-9);
+  // The valley's crease lies right under the strip, at a point measured.
+  EXPECT_NEAR(remeshAbove.InputToRemesh, 0.025 / cvt::BoundingBoxDiagonal(valley), 1e-12);
+  EXPECT_NEAR(inputAbove.InputToRemesh, fromBridged, 0.001);
+  EXPECT_LE(inputAbove.InputToRemesh, fromBridged + 1e-9);
+  std::cout << "[ measured ] peak between the points: remesh to input " << remeshAbove.RemeshToInput
+            << " of the diagonal (exactly " << fromValley << "), input to remesh "
+            << inputAbove.InputToRemesh << " (" << fromBridged << ")\n";
+}
+
 TEST(RestrictedVoronoi, FidelityMeasuredAgainstTheRemeshBeforeIsTheSame)
 {
   // A remesh 0.02 above a flat input, then the same with a dent down to the input (one vertex
@@ -2155,6 +2220,21 @@ TEST(RestrictedVoronoi, FidelityMeasuredAgainstTheRemeshBeforeIsTheSame)
   EXPECT_EQ(again.RemeshToInput, scratch.RemeshToInput);
   EXPECT_EQ(again.FarPoints, scratch.FarPoints);
   EXPECT_NEAR(scratch.InputToRemesh * cvt::BoundingBoxDiagonal(square), 0.02, 1e-9);
+  // A second dent far from the first: the input points between the probes round the first
+  // (measured closer there, as they lie almost as far as the share) are not asked anew, yet
+  // their distances are those from scratch too.
+  cvt::Remesh twice = dented;
+  twice.Points[3 * (20 * 101 + 20) + 2] = 0.0;
+  const cvt::RemeshFidelity twiceScratch = cvt::MeasureFidelity(twice, input, 0.009, 10, 10);
+  const cvt::RemeshFidelity twiceAgain =
+    cvt::MeasureFidelity(twice, input, 0.009, 10, 10, &dented, &scratch);
+  ASSERT_FALSE(scratch.FinerProbes.empty());
+  EXPECT_GT(twiceScratch.FinerProbes.size(), scratch.FinerProbes.size());
+  EXPECT_EQ(twiceAgain.FinerProbes, twiceScratch.FinerProbes);
+  EXPECT_EQ(twiceAgain.FinerProbeDistances, twiceScratch.FinerProbeDistances);
+  EXPECT_EQ(twiceAgain.ProbeDistances, twiceScratch.ProbeDistances);
+  EXPECT_EQ(twiceAgain.RemeshPointDistances, twiceScratch.RemeshPointDistances);
+  EXPECT_EQ(twiceAgain.FarPoints, twiceScratch.FarPoints);
 }
 
 TEST(RestrictedVoronoi, SphereRemeshStraddlesTheInput)
