@@ -3341,10 +3341,18 @@ std::vector<double> FinerPointsNear(
   std::vector<Piece> pieces;
   for (const auto& t : mesh.Triangles)
   {
+    bool wide = false;
+    for (int e = 0; e < 3 && !wide; ++e)
+    {
+      wide = Distance2(mesh.Point(t[e]), mesh.Point(t[(e + 1) % 3])) > spacing * spacing;
+    }
+    if (!wide)
+    {
+      continue;
+    }
     pieces.push_back({ { { mesh.Point(t[0])[0], mesh.Point(t[0])[1], mesh.Point(t[0])[2] },
       { mesh.Point(t[1])[0], mesh.Point(t[1])[1], mesh.Point(t[1])[2] },
       { mesh.Point(t[2])[0], mesh.Point(t[2])[1], mesh.Point(t[2])[2] } } });
-    bool whole = true; // the triangle itself, not cut
     while (!pieces.empty())
     {
       const Piece piece = pieces.back();
@@ -3367,11 +3375,6 @@ std::vector<double> FinerPointsNear(
         radius2 = std::max(radius2, Distance2(centroid, piece[e].data()));
       }
       const bool small = longest2 <= spacing * spacing;
-      if (small && whole)
-      {
-        break;
-      }
-      whole = false;
       std::uint32_t nearest = 0;
       double nearest2 = 0.0;
       tree.knnSearch(centroid, 1, &nearest, &nearest2);
@@ -3398,6 +3401,18 @@ std::vector<double> FinerPointsNear(
     }
   }
   return points;
+}
+
+/// Where each of `points` (flat x, y, z) is in them, by its coordinates' bits.
+std::unordered_map<PointBits, int, BitsHash> IndexByBits(const std::vector<double>& points)
+{
+  std::unordered_map<PointBits, int, BitsHash> index;
+  index.reserve(points.size() / 3);
+  for (size_t p = 0; p < points.size() / 3; ++p)
+  {
+    index.emplace(BitsOf<3>(&points[3 * p]), static_cast<int>(p));
+  }
+  return index;
 }
 
 /// The points of `points` (flat x, y, z) whose `distances` lie in (`low`, `high`], the
@@ -3565,13 +3580,7 @@ RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, d
   std::vector<int> finerBefore; // where each was measured before (the same to the bit)
   if (!keptAs.empty() && !was.FinerProbes.empty())
   {
-    const std::vector<double>& points = was.FinerProbes;
-    std::unordered_map<PointBits, int, BitsHash> known;
-    known.reserve(points.size() / 3);
-    for (size_t p = 0; p < points.size() / 3; ++p)
-    {
-      known.emplace(BitsOf<3>(&points[3 * p]), static_cast<int>(p));
-    }
+    const std::unordered_map<PointBits, int, BitsHash> known = IndexByBits(was.FinerProbes);
     finerBefore.assign(finerProbes.size() / 3, -1);
     for (size_t p = 0; p < finerBefore.size(); ++p)
     {
@@ -3587,16 +3596,8 @@ RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, d
   std::vector<double>& remeshPoints = fidelity.RemeshPoints;
   remeshPoints = CoveringPoints(asMesh, coarse);
   std::vector<double>& lift = fidelity.RemeshPointDistances;
-  std::unordered_map<PointBits, double, BitsHash> known;
-  if (before && measuredBefore)
-  {
-    const std::vector<double>& points = measuredBefore->RemeshPoints;
-    known.reserve(points.size() / 3);
-    for (size_t p = 0; p < points.size() / 3; ++p)
-    {
-      known.emplace(BitsOf<3>(&points[3 * p]), measuredBefore->RemeshPointDistances[p]);
-    }
-  }
+  const std::unordered_map<PointBits, int, BitsHash> known =
+    IndexByBits(before && measuredBefore ? measuredBefore->RemeshPoints : std::vector<double>());
   // The remesh points from `first` on, measured.
   const auto measureFrom = [&](size_t first)
   {
@@ -3606,7 +3607,7 @@ RemeshFidelity MeasureFidelity(const Remesh& remesh, const RemeshInput& input, d
       const auto at = known.find(BitsOf<3>(&remeshPoints[3 * p]));
       if (at != known.end())
       {
-        lift[p] = at->second;
+        lift[p] = measuredBefore->RemeshPointDistances[static_cast<size_t>(at->second)];
       }
     }
     cvt::For(static_cast<vtkIdType>(first), static_cast<vtkIdType>(lift.size()),
